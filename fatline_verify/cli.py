@@ -1,0 +1,177 @@
+"""The ``fatline`` command: a thin shell over the library.
+
+Handlers take parsed arguments and return an exit code; every bad input is one line on stderr.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+
+from . import __version__
+from .config import Model, load_model, shipped_models
+from .errors import FatlineError, InvalidInput, TraceDidNotReproduce
+from .numbers import parse_number
+from .options import CATALOGUE, Scheduler
+from .simulate import Outcome, simulate
+from .swarm import State
+from .text import explain_lines, trace_lines
+from .trace import check_replay, load_trace, run_to_json, write_trace
+
+EXIT_OK, EXIT_FOUND, EXIT_BAD = 0, 1, 2
+
+EPILOG = """exit codes:
+  0  everything asked holds (simulate: no violation and no deadlock; replay: every trace reproduces)
+  1  a violation or deadlock was found, or a trace did not reproduce
+  2  bad input (malformed model, trace or argument) or an internal error
+"""
+
+
+def _print(lines: Sequence[str]) -> None:
+    sys.stdout.write("\n".join(lines) + ("\n" if lines else ""))
+
+
+def parse_init(text: str, model: Model) -> State:
+    """``"0,0 3,0 5/2,3"`` (robot radii) to lattice positions."""
+    points = []
+    for token in text.split():
+        parts = token.split(",")
+        if len(parts) != 2:
+            raise InvalidInput(f"init={token!r}: expected a position x,y such as 3,0 or 5/2,-1")
+        try:
+            x = parse_number(parts[0], name="init x")
+            y = parse_number(parts[1], name="init y")
+        except ValueError:
+            raise InvalidInput(
+                f"init={token!r}: expected a position x,y of integers or fractions such as 3,0 or 5/2,-1"
+            ) from None
+        points.append(model.to_lattice((x, y)))
+    if not points:
+        raise InvalidInput(f"init={text!r}: expected at least one position x,y")
+    return tuple(points)
+
+
+def cmd_explain(args: argparse.Namespace) -> int:
+    if args.option is not None and args.option not in CATALOGUE:
+        raise InvalidInput(f"option={args.option!r}: unknown option; expected one of {', '.join(CATALOGUE)}")
+    model = load_model(args.model) if args.model else None
+    _print(explain_lines(args.option, model))
+    return EXIT_OK
+
+
+def cmd_models(args: argparse.Namespace) -> int:
+    for path in shipped_models():
+        model = load_model(path)
+        print(f"{path.stem}: {model.description}")
+        print(f"  {model.describe()}")
+    return EXIT_OK
+
+
+def cmd_simulate(args: argparse.Namespace) -> int:
+    model = load_model(args.model)
+    if args.rounds < 0:
+        raise InvalidInput(f"rounds={args.rounds}: expected a number of rounds >= 0")
+    initial = parse_init(args.init, model)
+    scheduler = Scheduler(args.scheduler) if args.scheduler else model.options.scheduler
+    run = simulate(initial, model, scheduler=scheduler, seed=args.seed, max_rounds=args.rounds)
+    doc = run_to_json(run, {"tool": "fatline simulate", "scheduler": str(scheduler), "seed": args.seed})
+    print(f"model {model.describe()}")
+    print(f"scheduler {scheduler}, seed {args.seed}, at most {args.rounds} rounds")
+    _print(trace_lines(doc))
+    if args.trace:
+        write_trace(doc, Path(args.trace))
+        print(f"trace written to {args.trace}")
+    return EXIT_FOUND if run.outcome in (Outcome.VIOLATION, Outcome.DEADLOCK) else EXIT_OK
+
+
+def cmd_replay(args: argparse.Namespace) -> int:
+    worst = EXIT_OK
+    override = load_model(args.model) if args.model else None
+    for name in args.traces:
+        try:
+            doc = load_trace(name)
+            run = check_replay(doc, override)
+        except TraceDidNotReproduce as exc:
+            print(f"{name}: DID NOT REPRODUCE: {exc}")
+            worst = max(worst, EXIT_FOUND)
+            continue
+        except FatlineError as exc:
+            print(f"fatline: error: {exc}", file=sys.stderr)
+            worst = EXIT_BAD
+            continue
+        v = doc["violation"]
+        what = f"{doc['outcome']}" + (f" ({v['property']} in round {v['round']})" if v else "")
+        print(f"{name}: reproduces: {len(run.rounds)} rounds, {what}")
+        if args.verbose:
+            _print(["  " + line for line in trace_lines(doc)])
+    return worst
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="fatline",
+        description="Verify 'Line Formation by Fat Robots under Limited Visibility' (Sil & Gan Chaudhuri).",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("--version", action="version", version=f"fatline-verify {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    def add(name: str, help_text: str) -> argparse.ArgumentParser:
+        return sub.add_parser(
+            name, help=help_text, description=help_text, epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter
+        )
+
+    p = add("explain", "print the paper's open points: quote, readings, default")
+    p.add_argument("option", nargs="?", help="one option (default: all)")
+    p.add_argument("--model", help="mark the readings this model file selects")
+    p.set_defaults(handler=cmd_explain)
+
+    p = add("models", "list the shipped model files")
+    p.set_defaults(handler=cmd_models)
+
+    p = add("simulate", "run one swarm under a seeded, fair random scheduler")
+    p.add_argument("model", nargs="?", default="paper", help="model file or shipped model name (default: paper)")
+    p.add_argument("--init", required=True, help='initial centres in robot radii, e.g. "0,0 3,0 5/2,3"')
+    p.add_argument("--scheduler", choices=[s.value for s in Scheduler], help="override the model's scheduler")
+    p.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    p.add_argument("--rounds", type=int, default=100, help="stop after this many rounds (default 100)")
+    p.add_argument("--trace", help="write the run as a trace JSON file")
+    p.set_defaults(handler=cmd_simulate)
+
+    p = add("replay", "recompute traces from their initial positions and compare every recorded value")
+    p.add_argument("traces", nargs="+", metavar="TRACE")
+    p.add_argument("--model", help="replay under this model instead of the trace's own")
+    p.add_argument("-v", "--verbose", action="store_true", help="print every round")
+    p.set_defaults(handler=cmd_replay)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point: parse, dispatch, turn every expected error into one line and exit 2."""
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # argparse already printed its one-line usage error
+        return int(exc.code or 0)
+    try:
+        return int(args.handler(args))
+    except FatlineError as exc:
+        print(f"fatline: error: {exc}", file=sys.stderr)
+        return EXIT_BAD
+    except KeyboardInterrupt:
+        print("fatline: interrupted", file=sys.stderr)
+        return EXIT_BAD
+    except BrokenPipeError:
+        return EXIT_OK
+
+
+def run() -> None:
+    """Console-script wrapper."""
+    sys.exit(main())
+
+
+if __name__ == "__main__":
+    run()

@@ -1,0 +1,235 @@
+"""A Model: the algorithm's readings, its parameters, and the checker's bounds; TOML in, validated.
+
+Units. The paper's unit is the robot radius. The engine works on a lattice of ``q`` points per
+radius, so a radius is ``q`` lattice units, visibility is ``rad_v * q`` (which must be an integer)
+and two discs touch at ``2 q``. Positions at the boundary (CLI, traces) are in radius units;
+:meth:`Model.to_lattice` and :meth:`Model.from_lattice` convert, exactly.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass, field
+from fractions import Fraction
+from pathlib import Path
+
+from .errors import InvalidModel
+from .numbers import Number, Point, format_number, normalize, parse_number
+from .options import Options, Visibility, options_from_mapping
+
+MODELS_DIR = Path(__file__).parent / "models"
+"""Where the shipped model files live (``models/`` at the top of the repository links here)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Parameters:
+    """The paper's free parameters. It fixes none of them; the shipped models pick small values.
+
+    ``rad_v``: visibility radius in radii. ``q``: lattice points per radius. ``delta``: the initial
+    condition "the mutual distance between two robots is at least delta > 2", read as distance > delta.
+    """
+
+    rad_v: Number = 4
+    q: int = 1
+    delta: Number = Fraction(21, 10)
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.q, int) or isinstance(self.q, bool) or self.q < 1:
+            raise InvalidModel(f"q={self.q!r}: expected a whole number of lattice points per radius, at least 1")
+        if self.rad_v <= 2:
+            raise InvalidModel(
+                f"rad_v={format_number(self.rad_v)}: expected a visibility radius above 2 "
+                "(a robot must be able to see a neighbour it does not touch)"
+            )
+        if (Fraction(self.rad_v) * self.q).denominator != 1:
+            raise InvalidModel(
+                f"rad_v={format_number(self.rad_v)} with q={self.q}: expected rad_v * q to be an integer"
+            )
+        if self.delta <= 2:
+            raise InvalidModel(f"delta={format_number(self.delta)}: expected delta > 2 (the paper: 'delta > 2 units')")
+
+
+@dataclass(frozen=True, slots=True)
+class Bounds:
+    """The checker's default bounds for this model (command-line flags override them)."""
+
+    robots: tuple[int, int] = (3, 3)
+    window: tuple[int, int] = (7, 7)
+    max_states: int = 1_000_000
+
+
+@dataclass(frozen=True, slots=True)
+class Model:
+    """Algorithm readings + parameters + bounds. Passed explicitly everywhere; there is no global model."""
+
+    name: str = "paper"
+    options: Options = field(default_factory=Options)
+    parameters: Parameters = field(default_factory=Parameters)
+    bounds: Bounds = field(default_factory=Bounds)
+    description: str = ""
+    source: str = ""
+
+    # --- lattice quantities, all in lattice units (radius = q) -------------------------------
+    @property
+    def radius(self) -> int:
+        """One robot radius in lattice units."""
+        return self.parameters.q
+
+    @property
+    def view(self) -> int:
+        """The visibility radius in lattice units."""
+        return int(Fraction(self.parameters.rad_v) * self.parameters.q)
+
+    @property
+    def view2(self) -> int:
+        """Squared distance up to which a robot sees another's centre, per ``visibility``."""
+        extra = {Visibility.CENTRE: 0, Visibility.ANY_PART: 1, Visibility.WHOLE_DISC: -1}[self.options.visibility]
+        reach = self.view + extra * self.radius
+        return reach * reach
+
+    @property
+    def contact2(self) -> int:
+        """Squared centre distance at which two discs touch: ``(2q)^2``."""
+        return 4 * self.radius * self.radius
+
+    def sees(self, d2: Number) -> bool:
+        """Whether a robot at squared distance ``d2`` is visible (the boundary is included)."""
+        return d2 <= self.view2
+
+    def initially_apart(self, d2: Number) -> bool:
+        """The initial condition on one pair: distance > delta, i.e. ``d2 > (delta q)^2``."""
+        return d2 > (Fraction(self.parameters.delta) * self.parameters.q) ** 2
+
+    def to_lattice(self, point: Point) -> Point:
+        """Radius units to lattice units."""
+        return (normalize(Fraction(point[0]) * self.radius), normalize(Fraction(point[1]) * self.radius))
+
+    def from_lattice(self, point: Point) -> Point:
+        """Lattice units to radius units."""
+        return (normalize(Fraction(point[0], self.radius)), normalize(Fraction(point[1], self.radius)))
+
+    def describe(self) -> str:
+        """One line: name, parameters and the readings that differ from the defaults."""
+        p = self.parameters
+        diff = self.options.differences()
+        readings = ", ".join(f"{k}={v}" for k, v in diff.items()) or "every default reading"
+        return (
+            f"{self.name}: rad_v={format_number(p.rad_v)}, q={p.q}, delta={format_number(p.delta)}; {readings}"
+        )
+
+
+_TOP_KEYS = {"name", "description", "parameters", "options", "bounds"}
+_PARAM_KEYS = {"rad_v", "q", "delta"}
+_BOUND_KEYS = {"robots", "window", "max_states"}
+
+
+def _unknown(table: dict[str, object], allowed: set[str], where: str) -> None:
+    for key in table:
+        if key not in allowed:
+            raise InvalidModel(f"{where}{key}={table[key]!r}: unknown key; expected one of {', '.join(sorted(allowed))}")
+
+
+def parse_robots(text: object, *, error: type[Exception] = InvalidModel) -> tuple[int, int]:
+    """``3`` or ``"2..5"`` to an inclusive range of robot counts."""
+    raw = str(text).strip()
+    parts = raw.split("..")
+    try:
+        lo, hi = (int(parts[0]), int(parts[-1])) if len(parts) in (1, 2) else (0, -1)
+    except ValueError:
+        lo, hi = 0, -1
+    if not (1 <= lo <= hi):
+        raise error(f"robots={raw!r}: expected a count like 3 or a range like 2..5 with 1 <= low <= high")
+    return lo, hi
+
+
+def parse_window(text: object, *, error: type[Exception] = InvalidModel) -> tuple[int, int]:
+    """``"9x9"`` to (width, height) in lattice points."""
+    raw = str(text).strip().lower()
+    parts = raw.split("x")
+    try:
+        w, h = (int(parts[0]), int(parts[1])) if len(parts) == 2 else (0, 0)
+    except ValueError:
+        w, h = 0, 0
+    if w < 1 or h < 1:
+        raise error(f"window={raw!r}: expected WIDTHxHEIGHT in lattice points, like 9x9")
+    return w, h
+
+
+def model_from_mapping(data: dict[str, object], *, source: str = "", default_name: str = "model") -> Model:
+    """Build and validate a Model from a parsed TOML/JSON mapping."""
+    _unknown(data, _TOP_KEYS, "")
+    params_raw = data.get("parameters", {})
+    if not isinstance(params_raw, dict):
+        raise InvalidModel(f"parameters={params_raw!r}: expected a table")
+    _unknown(params_raw, _PARAM_KEYS, "parameters.")
+    params: dict[str, object] = {}
+    for key in ("rad_v", "delta"):
+        if key in params_raw:
+            try:
+                params[key] = parse_number(params_raw[key], name=key, allow_decimal=True)
+            except ValueError as exc:
+                raise InvalidModel(str(exc)) from None
+    if "q" in params_raw:
+        params["q"] = params_raw["q"]
+    parameters = Parameters(**params)  # type: ignore[arg-type]
+    options = options_from_mapping(data.get("options", {}))  # type: ignore[arg-type]
+    bounds_raw = data.get("bounds", {})
+    if not isinstance(bounds_raw, dict):
+        raise InvalidModel(f"bounds={bounds_raw!r}: expected a table")
+    _unknown(bounds_raw, _BOUND_KEYS, "bounds.")
+    bounds = Bounds()
+    if "robots" in bounds_raw:
+        bounds = Bounds(parse_robots(bounds_raw["robots"]), bounds.window, bounds.max_states)
+    if "window" in bounds_raw:
+        bounds = Bounds(bounds.robots, parse_window(bounds_raw["window"]), bounds.max_states)
+    if "max_states" in bounds_raw:
+        ms = bounds_raw["max_states"]
+        if not isinstance(ms, int) or isinstance(ms, bool) or ms < 1:
+            raise InvalidModel(f"bounds.max_states={ms!r}: expected a positive integer")
+        bounds = Bounds(bounds.robots, bounds.window, ms)
+    name = data.get("name", default_name)
+    if not isinstance(name, str) or not name:
+        raise InvalidModel(f"name={name!r}: expected a non-empty string")
+    description = data.get("description", "")
+    if not isinstance(description, str):
+        raise InvalidModel(f"description={description!r}: expected a string")
+    return Model(name, options, parameters, bounds, description, source)
+
+
+def resolve_model_path(spec: str | Path) -> Path:
+    """A model argument: a path to a TOML file, or the name of a shipped model (``paper``)."""
+    path = Path(spec)
+    if path.is_file():
+        return path
+    shipped = MODELS_DIR / f"{spec}.toml"
+    if not path.suffix and shipped.is_file():
+        return shipped
+    known = ", ".join(sorted(p.stem for p in MODELS_DIR.glob("*.toml")))
+    raise InvalidModel(f"model={str(spec)!r}: no such file; expected a model file or a shipped model name ({known})")
+
+
+def load_model(spec: str | Path = "paper") -> Model:
+    """Read, parse and validate a model file. Every problem is one :class:`InvalidModel` line."""
+    path = resolve_model_path(spec)
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except tomllib.TOMLDecodeError as exc:
+        raise InvalidModel(f"model={str(path)!r}: not valid TOML ({exc})") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InvalidModel(f"model={str(path)!r}: cannot be read ({exc.__class__.__name__})") from None
+    return model_from_mapping(data, source=str(path), default_name=path.stem)
+
+
+def model_to_mapping(model: Model) -> dict[str, object]:
+    """The model as plain data (for traces and JSON results): name, every option, every parameter."""
+    p = model.parameters
+    return {
+        "name": model.name,
+        "parameters": {"rad_v": format_number(p.rad_v), "q": p.q, "delta": format_number(p.delta)},
+        "options": model.options.as_dict(),
+    }
+
+
+def shipped_models() -> list[Path]:
+    """The shipped model files, sorted by name."""
+    return sorted(MODELS_DIR.glob("*.toml"))

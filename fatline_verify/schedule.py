@@ -1,0 +1,167 @@
+"""One round: a shared snapshot, the active robots' decisions, rigid moves, and what went wrong.
+
+"The robots execute this cycle in semi-synchronous scheduling where an arbitrary set of robots
+look, compute and move simultaneously. This scheduling assures that when a robot is moving no
+other robot is observing it." So every active robot Looks at the same state, and a state's
+decisions are computed once; activating a robot whose destination is its position changes nothing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import ClassVar
+
+import networkx as nx
+
+from .algorithm import Decision, decide
+from .config import Model
+from .geometry import Path, path_point_dist2, paths_any_speed_dist2, paths_lockstep_dist2
+from .numbers import Number, Point
+from .options import Contact, Timing
+from .swarm import State, is_connected, visibility_graph
+
+
+@dataclass(frozen=True, slots=True)
+class Collision:
+    """Two discs came closer than allowed during the round (``contact``: below 2, or at most 2)."""
+
+    robots: tuple[int, int]
+    closest_dist2: Number
+    """The exact squared closest centre distance in lattice units."""
+    both_moved: bool
+
+    lemma: ClassVar[str] = "no-collision"
+
+
+@dataclass(frozen=True, slots=True)
+class Disconnection:
+    """The visibility graph was connected before the round and is not after it."""
+
+    components: tuple[tuple[int, ...], ...]
+    lost_edges: tuple[tuple[int, int], ...]
+
+    lemma: ClassVar[str] = "connectivity"
+
+
+@dataclass(frozen=True, slots=True)
+class RmaMoved:
+    """A robot ended right of the right-most axis, or a robot on it left it."""
+
+    robot: int
+    rma_x: Number
+    x_after: Number
+
+    lemma: ClassVar[str] = "rma-fixed"
+
+
+Violation = Collision | Disconnection | RmaMoved
+
+
+@dataclass(frozen=True, slots=True)
+class RoundResult:
+    """A round: who was active, what each decided, the states before and after, the violations."""
+
+    active: tuple[int, ...]
+    decisions: dict[int, Decision] = field(repr=False)
+    before: State = field(repr=False)
+    after: State
+    violations: tuple[Violation, ...] = ()
+
+
+def snapshot(state: Sequence[Point], i: int, model: Model) -> tuple[Point, ...]:
+    """What robot ``i`` Looks at: the robots it sees, relative to itself (itself excluded)."""
+    ox, oy = state[i]
+    out = []
+    for j, (x, y) in enumerate(state):
+        if j != i:
+            rel = (x - ox, y - oy)
+            if model.sees(rel[0] * rel[0] + rel[1] * rel[1]):
+                out.append(rel)
+    return tuple(out)
+
+
+def decide_all(state: Sequence[Point], model: Model, robots: Iterable[int] | None = None) -> dict[int, Decision]:
+    """Every (or the given) robot's decision on ``state``."""
+    indices = range(len(state)) if robots is None else robots
+    return {i: decide(snapshot(state, i, model), model) for i in indices}
+
+
+def enabled(decisions: dict[int, Decision]) -> tuple[int, ...]:
+    """The robots whose destination differs from their position."""
+    return tuple(sorted(i for i, d in decisions.items() if d.moves))
+
+
+def global_path(origin: Point, decision: Decision) -> Path:
+    """The decision's path translated to global coordinates."""
+    ox, oy = origin
+    return tuple((x + ox, y + oy) for x, y in decision.path)
+
+
+def collides(d2: Number, model: Model) -> bool:
+    """Whether squared centre distance ``d2`` is a collision under the ``contact`` option."""
+    limit = model.contact2
+    return d2 < limit or (model.options.contact is Contact.STRICT and d2 == limit)
+
+
+def collisions(state: Sequence[Point], paths: dict[int, Path], model: Model) -> list[Collision]:
+    """Pairs of discs that collide while the robots in ``paths`` move (the others rest)."""
+    found = []
+    n = len(state)
+    lockstep = model.options.timing is Timing.LOCKSTEP
+    for i in range(n):
+        for j in range(i + 1, n):
+            pi, pj = paths.get(i), paths.get(j)
+            if pi is None and pj is None:
+                continue
+            if pi is not None and pj is not None:
+                d2 = paths_lockstep_dist2(pi, pj) if lockstep else paths_any_speed_dist2(pi, pj)
+            elif pi is not None:
+                d2 = path_point_dist2(pi, state[j])
+            else:
+                assert pj is not None
+                d2 = path_point_dist2(pj, state[i])
+            if collides(d2, model):
+                found.append(Collision((i, j), d2, pi is not None and pj is not None))
+    return found
+
+
+def rma_violations(before: Sequence[Point], after: Sequence[Point]) -> list[RmaMoved]:
+    """Robots that crossed the right-most axis, or left it ("once on RMA, r cannot leave it")."""
+    rma = max(p[0] for p in before)
+    return [
+        RmaMoved(i, rma, a[0])
+        for i, (b, a) in enumerate(zip(before, after, strict=True))
+        if a[0] > rma or (b[0] == rma and a[0] != rma)
+    ]
+
+
+def disconnection(before: Sequence[Point], after: Sequence[Point], model: Model) -> Disconnection | None:
+    """The lost connectivity, when the graph was connected before and is not after."""
+    if is_connected(after, model) or not is_connected(before, model):
+        return None
+    g_after = visibility_graph(after, model)
+    lost = sorted(tuple(sorted(e)) for e in visibility_graph(before, model).edges if not g_after.has_edge(*e))
+    comps = sorted(tuple(sorted(c)) for c in nx.connected_components(g_after))
+    return Disconnection(tuple(comps), tuple(lost))  # type: ignore[arg-type]
+
+
+def play_round(
+    state: State, active: Iterable[int], model: Model, decisions: dict[int, Decision] | None = None
+) -> RoundResult:
+    """Activate ``active`` on ``state``: all Look at ``state``, Compute, and move rigidly."""
+    act = tuple(sorted(set(active)))
+    if decisions is None:
+        decisions = decide_all(state, model, act)
+    chosen = {i: decisions[i] for i in act}
+    paths = {i: global_path(state[i], d) for i, d in chosen.items() if d.moves}
+    after = tuple(
+        (p[0] + chosen[i].destination[0], p[1] + chosen[i].destination[1]) if i in chosen else p
+        for i, p in enumerate(state)
+    )
+    violations: list[Violation] = list(collisions(state, paths, model))
+    lost = disconnection(state, after, model)
+    if lost is not None:
+        violations.append(lost)
+    violations.extend(rma_violations(state, after))
+    return RoundResult(act, chosen, state, after, tuple(violations))

@@ -1,0 +1,85 @@
+"""Human text rendered from data: traces, decisions, violations, the option catalogue.
+
+The engine never prints; the CLI prints what these functions return.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .config import Model
+from .options import CATALOGUE, Options
+
+
+def _pt(p: list[Any]) -> str:
+    return f"({p[0]}, {p[1]})"
+
+
+def violation_line(v: dict[str, Any]) -> str:
+    """One line for a violation record of a trace."""
+    prop = v["property"]
+    robots = " ".join(f"r{i}" for i in v["robots"])
+    if prop == "no-collision":
+        how = "both moving" if v.get("both_moved") else "one moving"
+        return f"{prop}: {robots} collide ({how}); closest squared centre distance {v['closest_distance2']} (discs touch at 4)"
+    if prop == "connectivity":
+        edges = ", ".join(f"r{a}-r{b} (distance^2 {d})" for (a, b), d in zip(v["lost_edges"], v["distance2_after"]))
+        comps = " | ".join(" ".join(f"r{i}" for i in c) for c in v["components"])
+        return f"{prop}: visibility graph split into {comps}; lost {edges}"
+    if prop == "rma-fixed":
+        return f"{prop}: {robots} went from the right-most axis x={v['rma_x']} to x={v['x_after']}"
+    return f"{prop}: {robots}"
+
+
+_CASE_NOTE = {
+    "scenario-2": " (Scenario 2's search found no vacant point)",
+    "scenario-3": " (Scenario 3's search found no vacant point)",
+    "uncovered": " (a case Scenarios 1-3 leave out)",
+}
+
+
+def trace_lines(doc: dict[str, Any]) -> list[str]:
+    """The rounds of a trace document, one block per round, and its outcome."""
+    lines = ["start: " + "  ".join(f"r{i} {_pt(p)}" for i, p in enumerate(doc["initial"]))]
+    for k, rnd in enumerate(doc["rounds"], start=1):
+        lines.append(f"round {k}: active " + " ".join(f"r{i}" for i in rnd["active"]))
+        for d in rnd["decisions"]:
+            psi = f", psi_right x={d['psi']}" if d.get("psi") is not None else ""
+            case = _CASE_NOTE.get(d.get("case") or "", "") if d["rule"].startswith(("scenario-4", "uncovered")) else ""
+            lines.append(f"  r{d['robot']} {d['rule']}{case} -> {_pt(d['destination'])}{psi}")
+        lines.append("  now: " + "  ".join(f"r{i} {_pt(p)}" for i, p in enumerate(rnd["positions"])))
+        for v in rnd["violations"]:
+            lines.append("  VIOLATED " + violation_line(v))
+    n = len(doc["rounds"])
+    tail = {
+        "goal": f"goal reached: the robots form a line ({doc['model']['options'].get('goal', 'vertical-line')})",
+        "deadlock": "deadlock: no robot is enabled and the robots do not form a line",
+        "violation": "stopped at a violation",
+        "round-limit": "round limit reached: neither the goal, a deadlock nor a violation",
+    }[doc["outcome"]]
+    lines.append(f"outcome after {n} round{'s' if n != 1 else ''}: {tail}")
+    return lines
+
+
+def explain_lines(name: str | None = None, model: Model | None = None) -> list[str]:
+    """The catalogue (or one option): the quote, every reading, the default, the model's choice."""
+    chosen = (model.options if model else Options()).as_dict()
+    names = [name] if name else list(CATALOGUE)
+    lines: list[str] = []
+    for n in names:
+        spec = CATALOGUE[n]
+        lines.append(f"{n}")
+        lines.append(f'  paper: "{spec.quote}"')
+        for reading, meaning in spec.readings.items():
+            marks = []
+            if reading == spec.default.value:
+                marks.append("default")
+            if model is not None and chosen[n] == reading:
+                marks.append(f"model {model.name}")
+            tag = f" [{', '.join(marks)}]" if marks else ""
+            pointer = "*" if chosen[n] == reading else " "
+            lines.append(f"  {pointer} {reading}{tag}: {meaning}")
+        if spec.note:
+            lines.append(f"  note: {spec.note}")
+        lines.append("")
+    return lines[:-1] if lines else lines

@@ -1,0 +1,233 @@
+"""Versioned, schema-checked JSON traces, and replay.
+
+A trace holds the model (every option and parameter), the initial positions, and per round the
+active robots, each active robot's decision (rule, psi_right, destination), the positions after and
+the round's violations with their exact measured quantities. Positions are in robot radii.
+
+:func:`replay` recomputes everything from the initial positions and the recorded activation sets;
+:func:`check_replay` raises :class:`TraceDidNotReproduce` naming the first value that differs.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Iterator
+from fractions import Fraction
+from functools import cache
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import jsonschema
+
+from .config import Model, model_from_mapping, model_to_mapping
+from .errors import FatlineError, InvalidTrace, TraceDidNotReproduce
+from .numbers import Number, Point, format_number, parse_number
+from .schedule import Collision, Disconnection, RmaMoved, RoundResult, Violation, play_round
+from .simulate import Outcome, Run, outcome_after
+from .swarm import State
+
+FORMAT = "fatline-trace"
+VERSION = 1
+
+
+@cache
+def schema() -> dict[str, Any]:
+    """The trace JSON Schema shipped in the package."""
+    text = resources.files("fatline_verify").joinpath("schemas/trace.schema.json").read_text(encoding="utf-8")
+    return json.loads(text)  # type: ignore[no-any-return]
+
+
+# --- to JSON ---------------------------------------------------------------------------------------
+
+
+def _point(model: Model, p: Point) -> list[int | str]:
+    x, y = model.from_lattice(p)
+    return [format_number(x), format_number(y)]
+
+
+def _area(model: Model, d2: Number) -> int | str:
+    """A squared lattice distance in squared radii."""
+    return format_number(Fraction(d2) / (model.radius * model.radius))
+
+
+def violation_to_json(v: Violation, model: Model, after: State) -> dict[str, Any]:
+    """One violation with its measured quantity, in radius units."""
+    if isinstance(v, Collision):
+        return {
+            "property": v.lemma,
+            "robots": list(v.robots),
+            "closest_distance2": _area(model, v.closest_dist2),
+            "both_moved": v.both_moved,
+        }
+    if isinstance(v, Disconnection):
+        robots = sorted({i for e in v.lost_edges for i in e})
+        d2 = [
+            _area(model, (after[i][0] - after[j][0]) ** 2 + (after[i][1] - after[j][1]) ** 2) for i, j in v.lost_edges
+        ]
+        return {
+            "property": v.lemma,
+            "robots": robots,
+            "components": [list(c) for c in v.components],
+            "lost_edges": [list(e) for e in v.lost_edges],
+            "distance2_after": d2,
+        }
+    assert isinstance(v, RmaMoved)
+    return {
+        "property": v.lemma,
+        "robots": [v.robot],
+        "rma_x": format_number(Fraction(v.rma_x) / model.radius),
+        "x_after": format_number(Fraction(v.x_after) / model.radius),
+    }
+
+
+def round_to_json(r: RoundResult, model: Model) -> dict[str, Any]:
+    """One round: active set, each active robot's decision, positions after, violations."""
+    decisions = []
+    for i in r.active:
+        d = r.decisions[i]
+        ox, oy = r.before[i]
+        dest = (ox + d.destination[0], oy + d.destination[1])
+        decisions.append(
+            {
+                "robot": i,
+                "rule": str(d.rule),
+                "case": str(d.case) if d.case else None,
+                "psi": None if d.psi is None else format_number(Fraction(ox + d.psi) / model.radius),
+                "destination": _point(model, dest),
+            }
+        )
+    return {
+        "active": list(r.active),
+        "decisions": decisions,
+        "positions": [_point(model, p) for p in r.after],
+        "violations": [violation_to_json(v, model, r.after) for v in r.violations],
+    }
+
+
+def run_to_json(run: Run, origin: dict[str, Any] | None = None) -> dict[str, Any]:
+    """A whole run as a trace document (schema-valid)."""
+    model = run.model
+    rounds = [round_to_json(r, model) for r in run.rounds]
+    violation = None
+    if run.outcome is Outcome.VIOLATION and rounds and rounds[-1]["violations"]:
+        violation = {**rounds[-1]["violations"][0], "round": len(rounds)}
+    doc: dict[str, Any] = {
+        "format": FORMAT,
+        "version": VERSION,
+        "model": model_to_mapping(model),
+        "initial": [_point(model, p) for p in run.initial],
+        "rounds": rounds,
+        "outcome": str(run.outcome),
+        "violation": violation,
+    }
+    if origin:
+        doc["origin"] = origin
+    return doc
+
+
+def write_trace(doc: dict[str, Any], path: Path) -> None:
+    """Write a trace document (validated first, so nothing malformed is ever written)."""
+    validate(doc, where=str(path))
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(json.dumps(doc, indent=1) + "\n", encoding="utf-8")
+    tmp.replace(path)
+
+
+# --- from JSON --------------------------------------------------------------------------------------
+
+
+def validate(doc: object, *, where: str = "trace") -> None:
+    """Check ``doc`` against the schema; one-line :class:`InvalidTrace` naming the first problem."""
+    try:
+        jsonschema.validate(doc, schema())
+    except jsonschema.ValidationError as exc:
+        path = "/".join(str(p) for p in exc.absolute_path) or "(top level)"
+        raise InvalidTrace(f"{where}: at {path}: {exc.message}") from None
+
+
+def load_trace(path: str | Path) -> dict[str, Any]:
+    """Read and schema-check a trace file."""
+    p = Path(path)
+    try:
+        doc = json.loads(p.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise InvalidTrace(f"trace={str(p)!r}: no such file; expected a trace JSON file") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InvalidTrace(f"trace={str(p)!r}: cannot be read ({exc.__class__.__name__})") from None
+    except json.JSONDecodeError as exc:
+        raise InvalidTrace(f"trace={str(p)!r}: not JSON (line {exc.lineno}: {exc.msg})") from None
+    validate(doc, where=str(p))
+    return doc  # type: ignore[no-any-return]
+
+
+def trace_model(doc: dict[str, Any]) -> Model:
+    """The model a trace was recorded under; an unknown option or reading is :class:`InvalidTrace`."""
+    try:
+        return model_from_mapping(doc["model"], default_name=doc["model"]["name"])
+    except FatlineError as exc:
+        raise InvalidTrace(f"trace model: {exc}") from None
+
+
+def _positions(doc_points: list[list[Any]], model: Model, where: str) -> State:
+    out = []
+    for k, (x, y) in enumerate(doc_points):
+        try:
+            point = (parse_number(x, name=f"{where}[{k}].x"), parse_number(y, name=f"{where}[{k}].y"))
+        except ValueError as exc:
+            raise InvalidTrace(str(exc)) from None
+        out.append(model.to_lattice(point))
+    return tuple(out)
+
+
+def replay(doc: dict[str, Any], model: Model | None = None) -> Run:
+    """Recompute a trace's run from its initial positions and activation sets (under ``model``, by
+    default the trace's own). Stops early if the recomputed run ends before the recorded one does."""
+    model = model or trace_model(doc)
+    state = _positions(doc["initial"], model, "initial")
+    n = len(state)
+    rounds: list[RoundResult] = []
+    last: RoundResult | None = None
+    for k, record in enumerate(doc["rounds"], start=1):
+        if outcome_after(state, last, model) is not None:
+            break
+        bad = [i for i in record["active"] if i >= n]
+        if bad:
+            raise InvalidTrace(f"rounds/{k - 1}/active: robot {bad[0]} does not exist; expected 0..{n - 1}")
+        last = play_round(state, record["active"], model)
+        rounds.append(last)
+        state = last.after
+    outcome = outcome_after(state, last, model) or Outcome.ROUND_LIMIT
+    return Run(model, _positions(doc["initial"], model, "initial"), tuple(rounds), outcome)
+
+
+def _walk(recorded: Any, replayed: Any, path: str) -> Iterator[str]:
+    """Paths where two JSON values differ, in document order."""
+    if isinstance(recorded, dict) and isinstance(replayed, dict):
+        for key in list(recorded) + [k for k in replayed if k not in recorded]:
+            yield from _walk(recorded.get(key), replayed.get(key), f"{path}.{key}" if path else key)
+    elif isinstance(recorded, list) and isinstance(replayed, list):
+        for k in range(max(len(recorded), len(replayed))):
+            a = recorded[k] if k < len(recorded) else "<missing>"
+            b = replayed[k] if k < len(replayed) else "<missing>"
+            yield from _walk(a, b, f"{path}[{k}]")
+    elif recorded != replayed:
+        yield f"{path}: recorded {json.dumps(recorded)}, replayed {json.dumps(replayed)}"
+
+
+def differences(doc: dict[str, Any], run: Run) -> list[str]:
+    """Every recorded value the replayed ``run`` does not reproduce (rounds, outcome, violation)."""
+    again = run_to_json(run)
+    keys = ("rounds", "outcome", "violation")
+    return [d for key in keys for d in _walk(doc.get(key), again.get(key), key)]
+
+
+def check_replay(doc: dict[str, Any], model: Model | None = None) -> Run:
+    """Replay ``doc``; raise :class:`TraceDidNotReproduce` naming the first differing value."""
+    run = replay(doc, model)
+    diffs = differences(doc, run)
+    if diffs:
+        more = f" (and {len(diffs) - 1} more)" if len(diffs) > 1 else ""
+        raise TraceDidNotReproduce(f"{diffs[0]}{more}")
+    return run
