@@ -138,7 +138,8 @@ def _in_strip(offset: Number, model: Model, disc: bool) -> bool:
     distance around' it: the disc meets the strip with positive area (``|offset| < 2``) or its centre
     lies in it (``|offset| <= 1``)."""
     rho = model.radius
-    return abs(offset) < 2 * rho if disc else abs(offset) <= rho
+    size = offset if offset >= 0 else -offset
+    return size < 2 * rho if disc else size <= rho
 
 
 def classify(c: Point, model: Model) -> frozenset[Band]:
@@ -262,7 +263,7 @@ def _scenario_4(
 
 
 def free_path(destination: Point, snapshot: Iterable[Point], model: Model) -> bool:
-    """"A path ... is called free path, if from source to destination point the rectangular area
+    """ "A path ... is called free path, if from source to destination point the rectangular area
     having length as the source to destination distance and width as two units, is not contained
     any part of another robot." Only vertical and horizontal paths occur (Scenario 4 is vertical).
 
@@ -271,6 +272,8 @@ def free_path(destination: Point, snapshot: Iterable[Point], model: Model) -> bo
     """
     rho = model.radius
     (x0, y0), (x1, y1) = ORIGIN, destination
+    lo: Point
+    hi: Point
     if x0 == x1:
         lo, hi = (-rho, min(y0, y1)), (rho, max(y0, y1))
     elif y0 == y1:
@@ -336,6 +339,4 @@ def decide(snapshot: Sequence[Point], model: Model) -> Decision:
         found = _search(psi, direction, snapshot, model, seen)
         if found is not None:
             return Decision(found_rule, found, _path(found, opts.path), classification, candidates=tuple(seen), **kw)  # type: ignore[arg-type]
-    return _scenario_4(
-        snapshot, classification, model, rb and rc and rd, candidates=tuple(seen), case=case, **kw
-    )
+    return _scenario_4(snapshot, classification, model, rb and rc and rd, candidates=tuple(seen), case=case, **kw)

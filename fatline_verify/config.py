@@ -113,9 +113,7 @@ class Model:
         p = self.parameters
         diff = self.options.differences()
         readings = ", ".join(f"{k}={v}" for k, v in diff.items()) or "every default reading"
-        return (
-            f"{self.name}: rad_v={format_number(p.rad_v)}, q={p.q}, delta={format_number(p.delta)}; {readings}"
-        )
+        return f"{self.name}: rad_v={format_number(p.rad_v)}, q={p.q}, delta={format_number(p.delta)}; {readings}"
 
 
 _TOP_KEYS = {"name", "description", "parameters", "options", "bounds"}
@@ -126,7 +124,9 @@ _BOUND_KEYS = {"robots", "window", "max_states"}
 def _unknown(table: dict[str, object], allowed: set[str], where: str) -> None:
     for key in table:
         if key not in allowed:
-            raise InvalidModel(f"{where}{key}={table[key]!r}: unknown key; expected one of {', '.join(sorted(allowed))}")
+            raise InvalidModel(
+                f"{where}{key}={table[key]!r}: unknown key; expected one of {', '.join(sorted(allowed))}"
+            )
 
 
 def parse_robots(text: object, *, error: type[Exception] = InvalidModel) -> tuple[int, int]:
@@ -204,7 +204,7 @@ def resolve_model_path(spec: str | Path) -> Path:
     shipped = MODELS_DIR / f"{spec}.toml"
     if not path.suffix and shipped.is_file():
         return shipped
-    known = ", ".join(sorted(p.stem for p in MODELS_DIR.glob("*.toml")))
+    known = ", ".join(p.stem for p in shipped_models())
     raise InvalidModel(f"model={str(spec)!r}: no such file; expected a model file or a shipped model name ({known})")
 
 
@@ -232,4 +232,4 @@ def model_to_mapping(model: Model) -> dict[str, object]:
 
 def shipped_models() -> list[Path]:
     """The shipped model files, sorted by name."""
-    return sorted(MODELS_DIR.glob("*.toml"))
+    return sorted(MODELS_DIR.glob("*.toml"), key=lambda p: p.stem)

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from fractions import Fraction
+from itertools import pairwise
 
 from .numbers import Number, Point, normalize
 
@@ -148,18 +149,21 @@ def timeline(path: Path) -> list[tuple[Fraction, Point]]:
     for a, b in segs:
         if a[0] != b[0] and a[1] != b[1]:
             raise ValueError(f"path piece {a}->{b}: a path of several pieces must be axis-parallel")
-        lengths.append(abs(b[0] - a[0]) + abs(b[1] - a[1]))
-    total = sum(lengths)
+        dx, dy = b[0] - a[0], b[1] - a[1]
+        lengths.append((dx if dx >= 0 else -dx) + (dy if dy >= 0 else -dy))
+    total: Number = 0
+    for length in lengths:
+        total += length
     out = [(Fraction(0), segs[0][0])]
     run: Number = 0
-    for (a, b), length in zip(segs, lengths, strict=True):
+    for (_, b), length in zip(segs, lengths, strict=True):
         run += length
         out.append((Fraction(run) / total, b))
     return out
 
 
 def _position_at(line: Sequence[tuple[Fraction, Point]], t: Fraction) -> Point:
-    for (t0, p0), (t1, p1) in zip(line, line[1:], strict=False):
+    for (t0, p0), (t1, p1) in pairwise(line):
         if t0 <= t <= t1:
             if t1 == t0:
                 return p0
@@ -178,7 +182,7 @@ def paths_lockstep_dist2(p: Path, q: Path) -> Number:
     lp, lq = timeline(p), timeline(q)
     times = sorted({t for t, _ in lp} | {t for t, _ in lq})
     best: Number | None = None
-    for t0, t1 in zip(times, times[1:], strict=False):
+    for t0, t1 in pairwise(times):
         d0 = sub(_position_at(lp, t0), _position_at(lq, t0))
         d1 = sub(_position_at(lp, t1), _position_at(lq, t1))
         value = _closest_on_unit(d0, sub(d1, d0))

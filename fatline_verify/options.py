@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, fields, replace
 from enum import StrEnum
+from typing import Any
+
 from .errors import InvalidModel
 
 
@@ -271,7 +273,8 @@ CATALOGUE: dict[str, OptionSpec] = {
             "If no vacant point is found in R_psi n B using this procedure, then the vacant point can be "
             "found in the same manner in R_psi n D",
             {
-                "primary-then-opposite": "the scenario's own direction first (down in Scenario 2, up in 3), then the other",
+                "primary-then-opposite": "the scenario's own direction first (down in Scenario 2, up in 3), "
+                "then the other",
                 "primary-only": "the scenario's own direction only",
             },
         ),
@@ -388,7 +391,8 @@ class Options:
 
     def with_(self, **changes: str) -> Options:
         """A copy with some readings changed, by option name and reading text; validated."""
-        return replace(self, **{k: parse_reading(k, v) for k, v in changes.items()})
+        parsed: dict[str, Any] = {k: parse_reading(k, v) for k, v in changes.items()}
+        return replace(self, **parsed)
 
     def as_dict(self) -> dict[str, str]:
         """Every option and its reading, as text, in catalogue order."""
@@ -406,6 +410,8 @@ def parse_reading(name: str, value: object) -> StrEnum:
     if spec is None:
         raise InvalidModel(f"option {name}={value!r}: unknown option; expected one of {', '.join(CATALOGUE)}")
     try:
+        if not isinstance(value, str):
+            raise ValueError(value)
         return spec.enum(value)
     except ValueError:
         raise InvalidModel(
@@ -417,7 +423,8 @@ def options_from_mapping(mapping: dict[str, object], *, where: str = "options") 
     """Build :class:`Options` from ``{name: reading}``; unset options keep their defaults."""
     if not isinstance(mapping, dict):
         raise InvalidModel(f"{where}={mapping!r}: expected a table of option = reading")
-    return Options(**{name: parse_reading(name, value) for name, value in mapping.items()})
+    parsed: dict[str, Any] = {name: parse_reading(name, value) for name, value in mapping.items()}
+    return Options(**parsed)
 
 
 assert [f.name for f in fields(Options)] == list(CATALOGUE)

@@ -93,7 +93,8 @@ def simulate(
     """Run the swarm from ``initial`` until the goal, a deadlock, a violation or ``max_rounds``."""
     require_initial(initial, model)
     chooser = FairRandomScheduler(scheduler or model.options.scheduler, seed, len(initial))
-    state, last, rounds = initial, None, []
+    state, last = initial, None
+    rounds: list[RoundResult] = []
     while True:
         outcome = outcome_after(state, last, model)
         if outcome is not None:

@@ -20,7 +20,7 @@ State = tuple[Point, ...]
 
 
 def visibility_graph(state: Sequence[Point], model: Model) -> nx.Graph:
-    """"There exists an edge ... between the robots r_i and r_j if and only if they can see each
+    """ "There exists an edge ... between the robots r_i and r_j if and only if they can see each
     other." Visibility is symmetric under every reading (it depends on the distance only)."""
     graph = nx.Graph()
     graph.add_nodes_from(range(len(state)))
@@ -37,7 +37,7 @@ def is_connected(state: Sequence[Point], model: Model) -> bool:
 
 
 def is_goal(state: Sequence[Point], model: Model) -> bool:
-    """"The robots in R will form a straight line", per the ``goal`` option."""
+    """ "The robots in R will form a straight line", per the ``goal`` option."""
     goal = model.options.goal
     if goal is Goal.VERTICAL_LINE:
         return len({p[0] for p in state}) <= 1
@@ -56,7 +56,8 @@ def initial_problems(state: Sequence[Point], model: Model) -> list[str]:
     for i in range(len(state)):
         for j in range(i + 1, len(state)):
             d2 = dist2(state[i], state[j])
-            where = f"robots {i} {show_point(model.from_lattice(state[i]))} and {j} {show_point(model.from_lattice(state[j]))}"
+            pi, pj = show_point(model.from_lattice(state[i])), show_point(model.from_lattice(state[j]))
+            where = f"robots {i} {pi} and {j} {pj}"
             if d2 < model.contact2:
                 problems.append(f"{where} overlap (centre distance below 2)")
             elif not model.initially_apart(d2):

@@ -21,9 +21,12 @@ def violation_line(v: dict[str, Any]) -> str:
     robots = " ".join(f"r{i}" for i in v["robots"])
     if prop == "no-collision":
         how = "both moving" if v.get("both_moved") else "one moving"
-        return f"{prop}: {robots} collide ({how}); closest squared centre distance {v['closest_distance2']} (discs touch at 4)"
+        closest = v["closest_distance2"]
+        return f"{prop}: {robots} collide ({how}); closest squared centre distance {closest} (discs touch at 4)"
     if prop == "connectivity":
-        edges = ", ".join(f"r{a}-r{b} (distance^2 {d})" for (a, b), d in zip(v["lost_edges"], v["distance2_after"]))
+        edges = ", ".join(
+            f"r{a}-r{b} (distance^2 {d})" for (a, b), d in zip(v["lost_edges"], v["distance2_after"], strict=True)
+        )
         comps = " | ".join(" ".join(f"r{i}" for i in c) for c in v["components"])
         return f"{prop}: visibility graph split into {comps}; lost {edges}"
     if prop == "rma-fixed":

@@ -1,0 +1,20 @@
+"""Shared helpers: models with some readings changed."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+
+from fatline_verify.config import Model, Parameters
+from fatline_verify.options import Options
+
+
+def make_model(rad_v: int | Fraction = 4, q: int = 1, **readings: str) -> Model:
+    """The default model with ``rad_v``/``q`` and some readings changed."""
+    return Model(name="test", options=Options().with_(**readings), parameters=Parameters(rad_v=rad_v, q=q))
+
+
+@pytest.fixture
+def model() -> Model:
+    return make_model()
