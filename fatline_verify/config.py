@@ -9,9 +9,11 @@ and two discs touch at ``2 q``. Positions at the boundary (CLI, traces) are in r
 from __future__ import annotations
 
 import tomllib
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
+from typing import Any
 
 from .errors import InvalidModel
 from .numbers import Number, Point, format_number, normalize, parse_number
@@ -68,6 +70,8 @@ class Model:
     bounds: Bounds = field(default_factory=Bounds)
     description: str = ""
     source: str = ""
+    algorithm: Callable[..., Any] | None = field(default=None, repr=False, compare=False)
+    """A replacement for :func:`fatline_verify.algorithm.decide` (seeded-bug tests); ``None`` is the paper's."""
 
     # --- lattice quantities, all in lattice units (radius = q) -------------------------------
     @property
@@ -91,6 +95,12 @@ class Model:
     def contact2(self) -> int:
         """Squared centre distance at which two discs touch: ``(2q)^2``."""
         return 4 * self.radius * self.radius
+
+    @property
+    def apart2(self) -> int:
+        """The least integer squared lattice distance that meets the initial condition (> delta)."""
+        bound = (Fraction(self.parameters.delta) * self.parameters.q) ** 2
+        return int(bound) + 1
 
     def sees(self, d2: Number) -> bool:
         """Whether a robot at squared distance ``d2`` is visible (the boundary is included)."""

@@ -84,7 +84,8 @@ def snapshot(state: Sequence[Point], i: int, model: Model) -> tuple[Point, ...]:
 def decide_all(state: Sequence[Point], model: Model, robots: Iterable[int] | None = None) -> dict[int, Decision]:
     """Every (or the given) robot's decision on ``state``."""
     indices = range(len(state)) if robots is None else robots
-    return {i: decide(snapshot(state, i, model), model) for i in indices}
+    rule = model.algorithm or decide
+    return {i: rule(snapshot(state, i, model), model) for i in indices}
 
 
 def enabled(decisions: dict[int, Decision]) -> tuple[int, ...]:

@@ -26,6 +26,9 @@ class Outcome(StrEnum):
     DEADLOCK = "deadlock"
     VIOLATION = "violation"
     ROUND_LIMIT = "round-limit"
+    CYCLE = "cycle"
+    """A lasso: the rounds from ``loop_start`` on return the swarm to the same positions up to a
+    translation, fairly, so repeating them is an infinite fair execution."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -36,6 +39,12 @@ class Run:
     initial: State
     rounds: tuple[RoundResult, ...] = field(repr=False)
     outcome: Outcome
+    loop_start: int | None = None
+    """For a lasso: the number of rounds before the loop; the loop is every round after them."""
+
+    def state_at(self, k: int) -> State:
+        """The state after ``k`` rounds."""
+        return self.rounds[k - 1].after if k else self.initial
 
     @property
     def final(self) -> State:

@@ -23,9 +23,9 @@ import jsonschema
 from .config import Model, model_from_mapping, model_to_mapping
 from .errors import FatlineError, InvalidTrace, TraceDidNotReproduce
 from .numbers import Number, Point, format_number, parse_number
-from .schedule import Collision, Disconnection, RmaMoved, RoundResult, Violation, play_round
+from .schedule import Collision, Disconnection, RmaMoved, RoundResult, Violation, decide_all, enabled, play_round
 from .simulate import Outcome, Run, outcome_after
-from .swarm import State
+from .swarm import State, is_goal
 
 FORMAT = "fatline-trace"
 VERSION = 1
@@ -105,13 +105,11 @@ def round_to_json(r: RoundResult, model: Model) -> dict[str, Any]:
     }
 
 
-def run_to_json(run: Run, origin: dict[str, Any] | None = None) -> dict[str, Any]:
-    """A whole run as a trace document (schema-valid)."""
+def run_to_json(run: Run, origin: dict[str, Any] | None = None, focus: str | None = None) -> dict[str, Any]:
+    """A whole run as a trace document (schema-valid). ``focus`` names the lemma the trace witnesses
+    (default: the first violation of a violating run, or ``progress`` for a deadlock)."""
     model = run.model
     rounds = [round_to_json(r, model) for r in run.rounds]
-    violation = None
-    if run.outcome is Outcome.VIOLATION and rounds and rounds[-1]["violations"]:
-        violation = {**rounds[-1]["violations"][0], "round": len(rounds)}
     doc: dict[str, Any] = {
         "format": FORMAT,
         "version": VERSION,
@@ -119,11 +117,69 @@ def run_to_json(run: Run, origin: dict[str, Any] | None = None) -> dict[str, Any
         "initial": [_point(model, p) for p in run.initial],
         "rounds": rounds,
         "outcome": str(run.outcome),
-        "violation": violation,
+        "loop_start": run.loop_start,
+        "violation": derive_violation(run, rounds, focus),
     }
     if origin:
         doc["origin"] = origin
     return doc
+
+
+def approach_stuck(run: Run) -> list[int]:
+    """Robots off the right-most axis that never move right again in this execution.
+
+    Lemma 5: "Each robot will move closer to RMA in finite time interval." For a lasso: robots
+    left of the loop-start state's RMA whose x does not increase in any round of the loop. For a
+    finite run: robots left of the final state's RMA when no robot is enabled there (the execution
+    is over). The RMA is the right-most axis of the state at hand, which is the initial one as long
+    as rma-fixed holds.
+    """
+    if run.loop_start is not None:
+        start = run.state_at(run.loop_start)
+        rma = max(p[0] for p in start)
+        loop = run.rounds[run.loop_start :]
+        return [
+            i
+            for i, p in enumerate(start)
+            if p[0] < rma and not any(r.after[i][0] > r.before[i][0] for r in loop)
+        ]
+    final = run.final
+    if enabled(decide_all(final, run.model)):
+        return []
+    rma = max(p[0] for p in final)
+    return [i for i, p in enumerate(final) if p[0] < rma]
+
+
+def derive_violation(run: Run, rounds: list[dict[str, Any]], focus: str | None) -> dict[str, Any] | None:
+    """The violation record a run witnesses, recomputed from the run (replay compares it)."""
+    n_rounds = len(rounds)
+    if focus is None:
+        if run.outcome is Outcome.VIOLATION:
+            focus = rounds[-1]["violations"][0]["property"]
+        elif run.outcome is Outcome.DEADLOCK:
+            focus = "progress"
+        else:
+            return None
+    if focus in ("no-collision", "connectivity", "rma-fixed"):
+        if run.outcome is not Outcome.VIOLATION:
+            return None
+        match = next((v for v in rounds[-1]["violations"] if v["property"] == focus), None)
+        return None if match is None else {**match, "round": n_rounds}
+    if focus == "progress":
+        return {"property": focus, "robots": [], "round": n_rounds} if run.outcome is Outcome.DEADLOCK else None
+    if focus == "termination":
+        if run.outcome is Outcome.DEADLOCK or (run.outcome is Outcome.CYCLE and not _loop_meets_goal(run)):
+            return {"property": focus, "robots": [], "round": n_rounds}
+        return None
+    if focus == "approach":
+        stuck = approach_stuck(run) if run.outcome in (Outcome.CYCLE, Outcome.DEADLOCK, Outcome.GOAL) else []
+        return {"property": focus, "robots": stuck, "round": n_rounds} if stuck else None
+    raise InvalidTrace(f"violation.property={focus!r}: unknown lemma")
+
+
+def _loop_meets_goal(run: Run) -> bool:
+    assert run.loop_start is not None
+    return any(is_goal(run.state_at(k), run.model) for k in range(run.loop_start, len(run.rounds)))
 
 
 def write_trace(doc: dict[str, Any], path: Path) -> None:
@@ -183,23 +239,49 @@ def _positions(doc_points: list[list[Any]], model: Model, where: str) -> State:
 
 def replay(doc: dict[str, Any], model: Model | None = None) -> Run:
     """Recompute a trace's run from its initial positions and activation sets (under ``model``, by
-    default the trace's own). Stops early if the recomputed run ends before the recorded one does."""
+    default the trace's own). Every recorded round is replayed, also past a goal state (the robots
+    do not know they form a line, so the checker's witnesses may go on); the outcome is judged at the
+    end, and for a lasso (``loop_start``) the loop is checked to close, fairly."""
     model = model or trace_model(doc)
-    state = _positions(doc["initial"], model, "initial")
-    n = len(state)
+    initial = _positions(doc["initial"], model, "initial")
+    loop_start = doc.get("loop_start")
+    n = len(initial)
+    state = initial
     rounds: list[RoundResult] = []
     last: RoundResult | None = None
     for k, record in enumerate(doc["rounds"], start=1):
-        if outcome_after(state, last, model) is not None:
-            break
         bad = [i for i in record["active"] if i >= n]
         if bad:
             raise InvalidTrace(f"rounds/{k - 1}/active: robot {bad[0]} does not exist; expected 0..{n - 1}")
         last = play_round(state, record["active"], model)
         rounds.append(last)
         state = last.after
+    if loop_start is not None:
+        if loop_start >= len(rounds):
+            raise InvalidTrace(f"loop_start={loop_start}: expected fewer than the {len(rounds)} rounds")
+        run = Run(model, initial, tuple(rounds), Outcome.CYCLE, loop_start)
+        closes = _translated(run.state_at(loop_start), state) and loop_is_fair(run)
+        clean = not any(r.violations for r in rounds)
+        return Run(model, initial, tuple(rounds), Outcome.CYCLE if closes and clean else Outcome.ROUND_LIMIT, loop_start)
     outcome = outcome_after(state, last, model) or Outcome.ROUND_LIMIT
-    return Run(model, _positions(doc["initial"], model, "initial"), tuple(rounds), outcome)
+    return Run(model, initial, tuple(rounds), outcome)
+
+
+def _translated(a: State, b: State) -> bool:
+    """Whether ``b`` is ``a`` moved by one common vector, robot by robot."""
+    dx, dy = b[0][0] - a[0][0], b[0][1] - a[0][1]
+    return all(q[0] - p[0] == dx and q[1] - p[1] == dy for p, q in zip(a, b, strict=True))
+
+
+def loop_is_fair(run: Run) -> bool:
+    """No robot is enabled in every state of the loop without being activated in one of its rounds."""
+    assert run.loop_start is not None
+    loop = run.rounds[run.loop_start :]
+    for i in range(len(run.initial)):
+        idle = not any(i in r.active for r in loop)
+        if idle and all(decide_all(r.before, run.model, [i])[i].moves for r in loop):
+            return False
+    return True
 
 
 def _walk(recorded: Any, replayed: Any, path: str) -> Iterator[str]:
@@ -218,8 +300,9 @@ def _walk(recorded: Any, replayed: Any, path: str) -> Iterator[str]:
 
 def differences(doc: dict[str, Any], run: Run) -> list[str]:
     """Every recorded value the replayed ``run`` does not reproduce (rounds, outcome, violation)."""
-    again = run_to_json(run)
-    keys = ("rounds", "outcome", "violation")
+    focus = doc["violation"]["property"] if doc.get("violation") else None
+    again = run_to_json(run, focus=focus)
+    keys = ("rounds", "outcome", "loop_start", "violation")
     return [d for key in keys for d in _walk(doc.get(key), again.get(key), key)]
 
 

@@ -1,0 +1,226 @@
+"""``fatline check``: every lemma, every small swarm, every activation set, within stated bounds.
+
+For each robot count the checker enumerates the initial configurations, explores every reachable
+canonical state breadth-first, and gives each lemma a verdict: VIOLATED with a shortest witness
+that has been replayed by the executable model, HOLDS_WITHIN_BOUNDS with the bounds and counts, or
+INCONCLUSIVE with the reason. The engine never prints; progress goes through a callback.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .config import Model
+from .errors import InvalidInput
+from .explore.expand import Engine
+from .explore.initial import initial_array
+from .explore.lattice import KeyCodec
+from .explore.liveness import fair_cycles
+from .explore.scalar import ScalarEngine, require_runnable
+from .explore.search import Exploration, explore
+from .explore.witness import lasso_witness, state_witness, transition_witness
+from .properties import FLAG, SAFETY, Lemma, LemmaResult, StopReason, Verdict
+from .simulate import Outcome
+from .trace import approach_stuck, replay
+
+MAX_LASSOS_TRIED = 20
+
+
+@dataclass(frozen=True, slots=True)
+class SearchStats:
+    """The size of one robot count's search."""
+
+    robots: int
+    window: tuple[int, int]
+    engine: str
+    initial: int
+    states: int
+    transitions: int
+    escaped: int
+    violating_only: int
+    truncated: bool
+    seconds: float
+
+
+@dataclass(frozen=True, slots=True)
+class CheckResult:
+    """Every lemma's verdict for every robot count, with the search sizes."""
+
+    model: Model = field(repr=False)
+    window: tuple[int, int]
+    max_states: int
+    after_violation: str
+    stats: tuple[SearchStats, ...]
+    results: tuple[LemmaResult, ...]
+
+    def overall(self, lemma: Lemma) -> LemmaResult:
+        """The worst verdict over robot counts (VIOLATED, then INCONCLUSIVE, then HOLDS)."""
+        rank = {Verdict.VIOLATED: 0, Verdict.INCONCLUSIVE: 1, Verdict.HOLDS_WITHIN_BOUNDS: 2, Verdict.PROVED: 3}
+        mine = [r for r in self.results if r.lemma is lemma]
+        return min(mine, key=lambda r: (rank[r.verdict], r.robots))
+
+    @property
+    def any_violated(self) -> bool:
+        return any(r.verdict is Verdict.VIOLATED for r in self.results)
+
+    @property
+    def any_inconclusive(self) -> bool:
+        return any(r.verdict is Verdict.INCONCLUSIVE for r in self.results)
+
+
+def make_engine(name: str, model: Model) -> Engine:
+    """The named exploration engine for ``model``."""
+    require_runnable(model)
+    if name == "scalar":
+        return ScalarEngine(model)
+    if name == "fast":
+        from .explore.fast import FastEngine
+
+        return FastEngine(model)
+    raise InvalidInput(f"engine={name!r}: expected scalar or fast")
+
+
+def validate_bounds(robots: tuple[int, int], window: tuple[int, int], max_states: int) -> None:
+    """Reject bounds no search can meet, naming the value."""
+    if max_states < 1:
+        raise InvalidInput(f"max-states={max_states}: expected a positive number of states")
+    w, h = window
+    if w < 1 or h < 1:
+        raise InvalidInput(f"window={w}x{h}: expected a positive width and height")
+    for n in range(robots[0], robots[1] + 1):
+        try:
+            KeyCodec(n, window)
+        except ValueError:
+            raise InvalidInput(
+                f"window={w}x{h} with robots={n}: a state does not pack into 63 bits; expected a smaller window "
+                "or fewer robots"
+            ) from None
+
+
+def check(
+    model: Model,
+    robots: tuple[int, int] | None = None,
+    window: tuple[int, int] | None = None,
+    *,
+    max_states: int | None = None,
+    engine: str = "fast",
+    after_violation: str = "stop",
+    progress: Callable[[str, int, int], None] | None = None,
+) -> CheckResult:
+    """Check every lemma for every robot count in ``robots`` (bounds default to the model's)."""
+    robots = robots or model.bounds.robots
+    window = window or model.bounds.window
+    max_states = max_states or model.bounds.max_states
+    validate_bounds(robots, window, max_states)
+    stats, results = [], []
+    for n in range(robots[0], robots[1] + 1):
+        s, r = check_robots(model, n, window, max_states, engine, after_violation, progress)
+        stats.append(s)
+        results.extend(r)
+    return CheckResult(model, window, max_states, after_violation, tuple(stats), tuple(results))
+
+
+def check_robots(
+    model: Model,
+    n: int,
+    window: tuple[int, int],
+    max_states: int,
+    engine_name: str = "fast",
+    after_violation: str = "stop",
+    progress: Callable[[str, int, int], None] | None = None,
+) -> tuple[SearchStats, list[LemmaResult]]:
+    """Explore every execution of ``n`` robots and give every lemma its verdict."""
+    t0 = time.perf_counter()
+    engine = make_engine(engine_name, model)
+    initial = initial_array(n, window, model)
+    if not len(initial):
+        raise InvalidInput(
+            f"robots={n} window={window[0]}x{window[1]}: no initial configuration fits (pairwise distance > delta "
+            "and connected); expected a larger window"
+        )
+    tick = (lambda level, done, total: progress(f"n={n} level {level}", done, total)) if progress else None
+    ex = explore(model, initial, window, engine, max_states=max_states, after_violation=after_violation, progress=tick)
+    results = lemma_verdicts(ex)
+    stats = SearchStats(
+        n, window, engine.name, ex.n_initial, ex.n_states, ex.n_transitions, ex.escaped, ex.violating_only,
+        ex.truncated, time.perf_counter() - t0,
+    )
+    return stats, results
+
+
+def _result(ex: Exploration, lemma: Lemma, verdict: Verdict, reason: str = "", doc: Any = None) -> LemmaResult:
+    rounds = len(doc["rounds"]) if doc else None
+    return LemmaResult(lemma, verdict, ex.n, ex.window, reason, rounds, doc)
+
+
+def _bounded(ex: Exploration, lemma: Lemma, liveness: bool) -> LemmaResult:
+    """No violation found: HOLDS_WITHIN_BOUNDS, unless a bound cut the search short."""
+    if ex.truncated:
+        return _result(ex, lemma, Verdict.INCONCLUSIVE, StopReason.MAX_STATES.describe(f"{ex.n_states} states"))
+    if liveness and ex.escaped:
+        return _result(ex, lemma, Verdict.INCONCLUSIVE, StopReason.WINDOW.describe(f"{ex.escaped} transitions"))
+    w, h = ex.window
+    return _result(ex, lemma, Verdict.HOLDS_WITHIN_BOUNDS, f"{ex.n} robots, window {w}x{h}, {ex.n_states} states")
+
+
+def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
+    """Every lemma's verdict on one explored graph, witnesses replayed."""
+    out: dict[Lemma, LemmaResult] = {}
+    expanded = ex.expanded
+    for lemma in SAFETY:
+        hits = np.nonzero(expanded[ex.edge_src] & ((ex.edge_flags & FLAG[lemma]) != 0))[0]
+        if len(hits):
+            first = hits[np.lexsort((ex.edge_mask[hits], ex.edge_src[hits]))[0]]
+            doc = transition_witness(ex, int(first), lemma.value)
+            out[lemma] = _result(ex, lemma, Verdict.VIOLATED, "a violating round", doc)
+        else:
+            out[lemma] = _bounded(ex, lemma, liveness=False)
+
+    terminal = expanded & (ex.enabled == 0)
+    deadlocks = np.nonzero(terminal & ~ex.goal)[0]
+    if len(deadlocks):
+        for lemma in (Lemma.PROGRESS, Lemma.TERMINATION):
+            doc = state_witness(ex, int(deadlocks[0]), lemma.value)
+            out[lemma] = _result(ex, lemma, Verdict.VIOLATED, "a deadlock: no robot enabled, no line", doc)
+    else:
+        out[Lemma.PROGRESS] = _bounded(ex, Lemma.PROGRESS, liveness=False)
+        lassos = fair_cycles(ex, expanded & ~ex.goal)
+        if lassos:
+            doc = lasso_witness(ex, lassos[0].start, lassos[0].cycle, Lemma.TERMINATION.value)
+            out[Lemma.TERMINATION] = _result(ex, Lemma.TERMINATION, Verdict.VIOLATED, "a fair cycle never forms the line", doc)
+        else:
+            out[Lemma.TERMINATION] = _bounded(ex, Lemma.TERMINATION, liveness=True)
+    out[Lemma.APPROACH] = _approach(ex, terminal)
+    return [out[lemma] for lemma in Lemma]
+
+
+def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
+    """Lemma 5: a terminal state with a robot left of the RMA, or a fair cycle where one never moves right."""
+    states = ex.states
+    off_rma = states[:, :, 0].min(axis=1) < states[:, :, 0].max(axis=1)
+    stuck = np.nonzero(terminal & off_rma)[0]
+    if len(stuck):
+        doc = state_witness(ex, int(stuck[0]), Lemma.APPROACH.value)
+        return _result(ex, Lemma.APPROACH, Verdict.VIOLATED, "no robot can move and some are left of the RMA", doc)
+    lassos = fair_cycles(ex, ex.expanded)
+    for lasso in lassos[:MAX_LASSOS_TRIED]:
+        from .explore.witness import _follow
+        from .simulate import Run
+
+        prefix = ex.path(lasso.start)
+        initial, rounds = _follow(ex, lasso.start, [*prefix, *lasso.cycle])
+        if approach_stuck(Run(ex.model, initial, tuple(rounds), Outcome.CYCLE, len(prefix))):
+            doc = lasso_witness(ex, lasso.start, lasso.cycle, Lemma.APPROACH.value)
+            return _result(ex, Lemma.APPROACH, Verdict.VIOLATED, "a fair cycle where a robot never moves right", doc)
+    if lassos:
+        detail = f"{min(len(lassos), MAX_LASSOS_TRIED)} of {len(lassos)} fair cycles examined"
+        return _result(ex, Lemma.APPROACH, Verdict.INCONCLUSIVE, StopReason.CYCLE_NOT_DECISIVE.describe(detail))
+    return _bounded(ex, Lemma.APPROACH, liveness=True)
+
+
+__all__ = ["CheckResult", "SearchStats", "check", "check_robots", "lemma_verdicts", "replay"]

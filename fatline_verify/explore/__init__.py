@@ -1,0 +1,1 @@
+"""The bounded model checker: initial configurations, exploration engines, liveness, witnesses."""

@@ -1,0 +1,157 @@
+"""Liveness over the explored graph: deadlocks, terminal states off the RMA, and fair cycles.
+
+Fairness (weak, per robot): a cycle is fair when no robot stays enabled in every state of it
+without being activated in some round of it ("the robots do not stay idle for infinite time";
+idle robots may be activated for free, a self-loop). Canonical states forget which robot is which,
+but fairness is about a robot, so cycles are looked for in a product graph whose nodes are
+``(state, labelling)``: the labelling says which robot stands at each canonical index, and an edge
+carries the permutation its round induces. Relabelling robots is a symmetry of that graph, so
+exploring it from one labelling per strongly connected component (SCC) of the state graph is
+enough. A product SCC contains a fair cycle iff every robot is disabled in one of its nodes or
+activated on one of its edges (weak fairness needs no refinement of the SCC); the cycle built then
+visits, for each robot, such a node or edge, and returns.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import networkx as nx
+import numpy as np
+
+from ..schedule import play_round
+from .lattice import canonical
+from .search import Exploration
+
+Labels = tuple[int, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Lasso:
+    """A fair cycle: the state it starts from and its rounds as ``(state id, mask)`` steps."""
+
+    start: int
+    cycle: tuple[tuple[int, int], ...]
+
+
+def _trim(src: np.ndarray, dst: np.ndarray, n_nodes: int) -> np.ndarray:
+    """Edges that can lie on a cycle: repeatedly drop edges at nodes without in- or out-edges."""
+    keep = np.ones(len(src), dtype=bool)
+    while True:
+        outdeg = np.bincount(src[keep], minlength=n_nodes)
+        indeg = np.bincount(dst[keep], minlength=n_nodes)
+        ok = keep & (outdeg[dst] > 0) & (indeg[src] > 0)
+        if ok.sum() == keep.sum():
+            return keep
+        keep = ok
+
+
+def _permutation(ex: Exploration, state_id: int, mask: int) -> tuple[int, ...]:
+    """For the round ``mask`` from ``state_id``: ``perm[k]`` = the source index now at canonical index k."""
+    state = tuple((int(x), int(y)) for x, y in ex.states[state_id])
+    active = [i for i in range(ex.n) if mask >> i & 1]
+    after = play_round(state, active, ex.model).after
+    _, order = canonical(np.array([after], dtype=np.int64))
+    return tuple(int(i) for i in order[0])
+
+
+def fair_cycles(ex: Exploration, nodes: np.ndarray) -> list[Lasso]:
+    """One fair cycle per product SCC that has one, among explored states with ``nodes[id]`` true.
+
+    Only edges between such states count, and only edges the search follows (non-violating unless
+    ``after_violation == "continue"``).
+    """
+    ok = (ex.edge_dst >= 0) & nodes[ex.edge_src] & nodes[np.maximum(ex.edge_dst, 0)]
+    src, dst, mask = ex.edge_src[ok], ex.edge_dst[ok], ex.edge_mask[ok]
+    keep = _trim(src, dst, ex.n_states)
+    src, dst, mask = src[keep], dst[keep], mask[keep]
+    if not len(src):
+        return []
+    graph = nx.MultiDiGraph()
+    for s, d, k in zip(src.tolist(), dst.tolist(), mask.tolist(), strict=True):
+        graph.add_edge(s, d, mask=k)
+    found = []
+    identity = tuple(range(ex.n))
+    for component in nx.strongly_connected_components(graph):
+        sub = graph.subgraph(component)
+        if len(component) == 1 and not sub.number_of_edges():
+            continue
+        start = min(component)
+        product = _product(ex, sub, start, identity)
+        for pcomp in nx.strongly_connected_components(product):
+            lasso = _fair_cycle(ex, product.subgraph(pcomp))
+            if lasso is not None:
+                found.append(lasso)
+    return sorted(found, key=lambda lasso: (int(ex.depth[lasso.start]), lasso.start, len(lasso.cycle)))
+
+
+def _product(ex: Exploration, sub: nx.MultiDiGraph, start: int, labels: Labels) -> nx.MultiDiGraph:
+    product = nx.MultiDiGraph()
+    todo = [(start, labels)]
+    product.add_node(todo[0])
+    perms: dict[tuple[int, int], tuple[int, ...]] = {}
+    while todo:
+        node = todo.pop()
+        s, lab = node
+        for _, d, data in sub.out_edges(s, data=True):
+            k = data["mask"]
+            perm = perms.get((s, k))
+            if perm is None:
+                perm = perms[(s, k)] = _permutation(ex, s, k)
+            nxt = (d, tuple(lab[perm[i]] for i in range(ex.n)))
+            if nxt not in product:
+                todo.append(nxt)
+            product.add_edge(node, nxt, mask=k)
+    return product
+
+
+def _fair_cycle(ex: Exploration, comp: nx.MultiDiGraph) -> Lasso | None:
+    if comp.number_of_edges() == 0:
+        return None
+    targets: list[tuple[str, object]] = []
+    for robot in range(ex.n):
+        disabled = next(
+            (node for node in sorted(comp.nodes) if not (int(ex.enabled[node[0]]) >> node[1].index(robot) & 1)), None
+        )
+        if disabled is not None:
+            targets.append(("node", disabled))
+            continue
+        edge = next(
+            (
+                (u, v, data["mask"])
+                for u, v, data in sorted(comp.edges(data=True), key=lambda e: (e[0], e[1], e[2]["mask"]))
+                if data["mask"] >> u[1].index(robot) & 1
+            ),
+            None,
+        )
+        if edge is None:
+            return None
+        targets.append(("edge", edge))
+    start = min(comp.nodes)
+    steps: list[tuple[int, int]] = []
+    here = start
+
+    def walk(to: tuple[int, Labels]) -> None:
+        nonlocal here
+        path = nx.shortest_path(comp, here, to)
+        for u, v in zip(path, path[1:], strict=False):
+            k = min(data["mask"] for data in comp.get_edge_data(u, v).values())
+            steps.append((u[0], k))
+        here = to
+
+    for kind, what in targets:
+        if kind == "node":
+            walk(what)  # type: ignore[arg-type]
+        else:
+            u, v, k = what  # type: ignore[misc]
+            walk(u)
+            steps.append((u[0], k))
+            here = v
+    walk(start)
+    if not steps:  # the start node is a target of every robot; take its cheapest self-loop or cycle
+        for u, v, data in comp.out_edges(start, data=True):
+            steps.append((u[0], data["mask"]))
+            here = v
+            break
+        walk(start)
+    return Lasso(start[0], tuple(steps))
