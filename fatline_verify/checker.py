@@ -113,9 +113,9 @@ def check(
     progress: Callable[[str, int, int], None] | None = None,
 ) -> CheckResult:
     """Check every lemma for every robot count in ``robots`` (bounds default to the model's)."""
-    robots = robots or model.bounds.robots
-    window = window or model.bounds.window
-    max_states = max_states or model.bounds.max_states
+    robots = model.bounds.robots if robots is None else robots
+    window = model.bounds.window if window is None else window
+    max_states = model.bounds.max_states if max_states is None else max_states
     validate_bounds(robots, window, max_states)
     stats, results = [], []
     for n in range(robots[0], robots[1] + 1):
@@ -147,8 +147,16 @@ def check_robots(
     ex = explore(model, initial, window, engine, max_states=max_states, after_violation=after_violation, progress=tick)
     results = lemma_verdicts(ex)
     stats = SearchStats(
-        n, window, engine.name, ex.n_initial, ex.n_states, ex.n_transitions, ex.escaped, ex.violating_only,
-        ex.truncated, time.perf_counter() - t0,
+        n,
+        window,
+        engine.name,
+        ex.n_initial,
+        ex.n_states,
+        ex.n_transitions,
+        ex.escaped,
+        ex.violating_only,
+        ex.truncated,
+        time.perf_counter() - t0,
     )
     return stats, results
 
@@ -192,7 +200,9 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
         lassos = fair_cycles(ex, expanded & ~ex.goal)
         if lassos:
             doc = lasso_witness(ex, lassos[0].start, lassos[0].cycle, Lemma.TERMINATION.value)
-            out[Lemma.TERMINATION] = _result(ex, Lemma.TERMINATION, Verdict.VIOLATED, "a fair cycle never forms the line", doc)
+            out[Lemma.TERMINATION] = _result(
+                ex, Lemma.TERMINATION, Verdict.VIOLATED, "a fair cycle never forms the line", doc
+            )
         else:
             out[Lemma.TERMINATION] = _bounded(ex, Lemma.TERMINATION, liveness=True)
     out[Lemma.APPROACH] = _approach(ex, terminal)

@@ -6,26 +6,34 @@ Handlers take parsed arguments and return an exit code; every bad input is one l
 from __future__ import annotations
 
 import argparse
+import json
+import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from . import __version__
-from .config import Model, load_model, shipped_models
+from .config import Model, load_model, parse_robots, parse_window, shipped_models
 from .errors import FatlineError, InvalidInput, TraceDidNotReproduce
 from .numbers import parse_number
 from .options import CATALOGUE, Scheduler
 from .simulate import Outcome, simulate
 from .swarm import State
-from .text import explain_lines, trace_lines
+from .text import check_lines, explain_lines, trace_lines
 from .trace import check_replay, load_trace, run_to_json, write_trace
 
-EXIT_OK, EXIT_FOUND, EXIT_BAD = 0, 1, 2
+if TYPE_CHECKING:
+    from .checker import CheckResult
+
+EXIT_OK, EXIT_FOUND, EXIT_BAD, EXIT_INCONCLUSIVE = 0, 1, 2, 3
 
 EPILOG = """exit codes:
-  0  everything asked holds (simulate: no violation and no deadlock; replay: every trace reproduces)
+  0  everything asked holds (check: every lemma HOLDS_WITHIN_BOUNDS; simulate: no violation and no
+     deadlock; replay: every trace reproduces)
   1  a violation or deadlock was found, or a trace did not reproduce
   2  bad input (malformed model, trace or argument) or an internal error
+  3  check only: nothing violated, but some verdict is INCONCLUSIVE (a bound was hit)
 """
 
 
@@ -109,6 +117,124 @@ def cmd_replay(args: argparse.Namespace) -> int:
     return worst
 
 
+def cmd_check(args: argparse.Namespace) -> int:
+    from .checker import check
+
+    model = load_model(args.model)
+    robots = parse_robots(args.robots, error=InvalidInput) if args.robots else None
+    window = parse_window(args.window, error=InvalidInput) if args.window else None
+    if args.q is not None:
+        model = _with_q(model, args.q)
+    traces_dir = Path(args.traces)
+    if traces_dir.exists() and not traces_dir.is_dir():
+        raise InvalidInput(
+            f"traces={args.traces!r}: exists and is not a directory; expected a directory for witness traces"
+        )
+    if args.json and Path(args.json).is_dir():
+        raise InvalidInput(f"json={args.json!r}: is a directory; expected a file name")
+    with _Progress(enabled=not args.quiet) as bar:
+        result = check(
+            model,
+            robots,
+            window,
+            max_states=args.max_states,
+            engine=args.engine,
+            after_violation=args.after_violation,
+            progress=bar.update,
+        )
+    paths: dict[tuple[str, int], str] = {}
+    for r in result.results:
+        if r.witness is not None:
+            path = traces_dir / f"{model.name}-{r.lemma.value}-n{r.robots}.json"
+            write_trace(r.witness, path)
+            paths[(r.lemma.value, r.robots)] = str(path)
+    _print(check_lines(result, paths))
+    if args.json:
+        _write_json(Path(args.json), check_json(result, paths))
+        print(f"results written to {args.json}")
+    if result.any_violated:
+        return EXIT_FOUND
+    return EXIT_INCONCLUSIVE if result.any_inconclusive else EXIT_OK
+
+
+def _with_q(model: Model, q: int) -> Model:
+    from dataclasses import replace
+
+    from .config import Parameters
+
+    p = model.parameters
+    return replace(model, parameters=Parameters(rad_v=p.rad_v, q=q, delta=p.delta))
+
+
+def check_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dict[str, object]:
+    """The check result as plain data (for ``--json``)."""
+    from .config import model_to_mapping
+
+    return {
+        "model": model_to_mapping(result.model),
+        "window": list(result.window),
+        "max_states": result.max_states,
+        "after_violation": result.after_violation,
+        "searches": [
+            {
+                "robots": s.robots,
+                "initial": s.initial,
+                "states": s.states,
+                "transitions": s.transitions,
+                "escaped": s.escaped,
+                "violating_only": s.violating_only,
+                "truncated": s.truncated,
+                "seconds": round(s.seconds, 3),
+                "engine": s.engine,
+            }
+            for s in result.stats
+        ],
+        "lemmas": [
+            {
+                "lemma": r.lemma.value,
+                "robots": r.robots,
+                "verdict": r.verdict.value,
+                "reason": r.reason,
+                "witness_rounds": r.witness_rounds,
+                "trace": paths.get((r.lemma.value, r.robots)),
+            }
+            for r in result.results
+        ],
+    }
+
+
+def _write_json(path: Path, data: object) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(json.dumps(data, indent=1) + "\n", encoding="utf-8")
+    tmp.replace(path)
+
+
+class _Progress:
+    """A progress bar on stderr (tqdm), shown only on a terminal."""
+
+    def __init__(self, enabled: bool) -> None:
+        self.enabled = enabled
+        self.bar = None
+
+    def __enter__(self) -> _Progress:
+        if self.enabled:
+            from tqdm import tqdm
+
+            self.bar = tqdm(total=None, unit=" states", file=sys.stderr, disable=None, leave=False)
+        return self
+
+    def update(self, label: str, done: int, total: int) -> None:
+        if self.bar is not None:
+            self.bar.set_description(label)
+            self.bar.n = total
+            self.bar.refresh()
+
+    def __exit__(self, *exc: object) -> None:
+        if self.bar is not None:
+            self.bar.close()
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="fatline",
@@ -135,6 +261,24 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = add("models", "list the shipped model files")
     p.set_defaults(handler=cmd_models)
+
+    p = add("check", "check every lemma on every small swarm and every activation set (bounded)")
+    p.add_argument("model", nargs="?", default="paper", help="model file or shipped model name (default: paper)")
+    p.add_argument("--robots", help="robot count or range, e.g. 3 or 2..4 (default: the model's bounds)")
+    p.add_argument("--window", help="WIDTHxHEIGHT lattice points, e.g. 9x9 (default: the model's bounds)")
+    p.add_argument("--q", type=int, help="lattice points per radius (default: the model's q)")
+    p.add_argument("--max-states", type=int, help="stop a search after this many states (default: the model's)")
+    p.add_argument("--engine", choices=["fast", "scalar"], default="fast", help="exploration engine (default fast)")
+    p.add_argument(
+        "--after-violation",
+        choices=["stop", "continue"],
+        default="stop",
+        help="explore states reached through a violating round (default: stop)",
+    )
+    p.add_argument("--json", help="write the results as JSON to this file")
+    p.add_argument("--traces", default="traces", help="directory for witness traces (default: traces)")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(handler=cmd_check)
 
     p = add("simulate", "run one swarm under a seeded, fair random scheduler")
     p.add_argument("model", nargs="?", default="paper", help="model file or shipped model name (default: paper)")
@@ -170,6 +314,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_BAD
     except BrokenPipeError:
         return EXIT_OK
+    except Exception as exc:  # a bug of the tool: one line, the traceback on request
+        if os.environ.get("FATLINE_DEBUG"):
+            raise
+        print(
+            f"fatline: internal error: {exc.__class__.__name__}: {exc} (set FATLINE_DEBUG=1 for the traceback)",
+            file=sys.stderr,
+        )
+        return EXIT_BAD
 
 
 def run() -> None:

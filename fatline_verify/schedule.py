@@ -105,23 +105,31 @@ def collides(d2: Number, model: Model) -> bool:
     return d2 < limit or (model.options.contact is Contact.STRICT and d2 == limit)
 
 
+def closest_dist2(pi: Path | None, pj: Path | None, ci: Point, cj: Point, model: Model) -> Number:
+    """Closest squared centre distance of two robots during a round; ``None`` for a robot at rest at
+    its centre ``c``. Two movers are timed per the ``timing`` option."""
+    if pi is not None and pj is not None:
+        if model.options.timing is Timing.LOCKSTEP:
+            return paths_lockstep_dist2(pi, pj)
+        return paths_any_speed_dist2(pi, pj)
+    if pi is not None:
+        return path_point_dist2(pi, cj)
+    if pj is not None:
+        return path_point_dist2(pj, ci)
+    dx, dy = ci[0] - cj[0], ci[1] - cj[1]
+    return dx * dx + dy * dy
+
+
 def collisions(state: Sequence[Point], paths: dict[int, Path], model: Model) -> list[Collision]:
     """Pairs of discs that collide while the robots in ``paths`` move (the others rest)."""
     found = []
     n = len(state)
-    lockstep = model.options.timing is Timing.LOCKSTEP
     for i in range(n):
         for j in range(i + 1, n):
             pi, pj = paths.get(i), paths.get(j)
             if pi is None and pj is None:
                 continue
-            if pi is not None and pj is not None:
-                d2 = paths_lockstep_dist2(pi, pj) if lockstep else paths_any_speed_dist2(pi, pj)
-            elif pi is not None:
-                d2 = path_point_dist2(pi, state[j])
-            else:
-                assert pj is not None
-                d2 = path_point_dist2(pj, state[i])
+            d2 = closest_dist2(pi, pj, state[i], state[j], model)
             if collides(d2, model):
                 found.append(Collision((i, j), d2, pi is not None and pj is not None))
     return found

@@ -86,3 +86,61 @@ def explain_lines(name: str | None = None, model: Model | None = None) -> list[s
             lines.append(f"  note: {spec.note}")
         lines.append("")
     return lines[:-1] if lines else lines
+
+
+def table(headers: list[str], rows: list[list[str]]) -> list[str]:
+    """A plain-text table with aligned columns."""
+    widths = [max(len(h), *(len(r[i]) for r in rows)) if rows else len(h) for i, h in enumerate(headers)]
+    line = "  ".join(h.ljust(w) for h, w in zip(headers, widths, strict=True)).rstrip()
+    out = [line, "  ".join("-" * w for w in widths)]
+    out += ["  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip() for r in rows]
+    return out
+
+
+def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[str]:
+    """The summary of a :class:`fatline_verify.checker.CheckResult`."""
+    from .properties import Lemma
+
+    model = result.model
+    w, h = result.window
+    lines = [
+        f"model {model.describe()}",
+        f"window {w}x{h} lattice points, at most {result.max_states} states per robot count",
+    ]
+    lines.append("")
+    rows = []
+    for s in result.stats:
+        rows.append(
+            [
+                str(s.robots),
+                str(s.initial),
+                str(s.states),
+                str(s.transitions),
+                str(s.escaped),
+                str(s.violating_only),
+                "yes" if s.truncated else "no",
+                f"{s.seconds:.2f}",
+                s.engine,
+            ]
+        )
+    lines += table(
+        ["robots", "initial", "states", "transitions", "escaped", "violating-only", "truncated", "seconds", "engine"],
+        rows,
+    )
+    lines.append("")
+    rows = []
+    for lemma in Lemma:
+        for r in (x for x in result.results if x.lemma is lemma):
+            trace = trace_paths.get((lemma.value, r.robots), "")
+            witness = "" if r.witness_rounds is None else f"{r.witness_rounds} rounds"
+            rows.append([lemma.value, str(r.robots), r.verdict.value, witness, r.reason, trace])
+    lines += table(["lemma", "robots", "verdict", "witness", "detail", "trace"], rows)
+    lines.append("")
+    if result.after_violation == "stop":
+        lines.append(
+            "States reached only through a violating round are not explored further; liveness verdicts are over "
+            "executions that break no safety lemma."
+        )
+    else:
+        lines.append("States reached through violating rounds are explored further (--after-violation continue).")
+    return lines

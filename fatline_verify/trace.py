@@ -138,11 +138,7 @@ def approach_stuck(run: Run) -> list[int]:
         start = run.state_at(run.loop_start)
         rma = max(p[0] for p in start)
         loop = run.rounds[run.loop_start :]
-        return [
-            i
-            for i, p in enumerate(start)
-            if p[0] < rma and not any(r.after[i][0] > r.before[i][0] for r in loop)
-        ]
+        return [i for i, p in enumerate(start) if p[0] < rma and not any(r.after[i][0] > r.before[i][0] for r in loop)]
     final = run.final
     if enabled(decide_all(final, run.model)):
         return []
@@ -262,7 +258,9 @@ def replay(doc: dict[str, Any], model: Model | None = None) -> Run:
         run = Run(model, initial, tuple(rounds), Outcome.CYCLE, loop_start)
         closes = _translated(run.state_at(loop_start), state) and loop_is_fair(run)
         clean = not any(r.violations for r in rounds)
-        return Run(model, initial, tuple(rounds), Outcome.CYCLE if closes and clean else Outcome.ROUND_LIMIT, loop_start)
+        return Run(
+            model, initial, tuple(rounds), Outcome.CYCLE if closes and clean else Outcome.ROUND_LIMIT, loop_start
+        )
     outcome = outcome_after(state, last, model) or Outcome.ROUND_LIMIT
     return Run(model, initial, tuple(rounds), outcome)
 

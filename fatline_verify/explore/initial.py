@@ -43,33 +43,36 @@ def initial_configurations(n: int, window: tuple[int, int], model: Model) -> Ite
         return
     nbrs = _neighbours(cells, model)
 
-    def apart(c: tuple[int, int], chosen: list[tuple[int, int]]) -> bool:
-        return all(model.initially_apart((c[0] - d[0]) ** 2 + (c[1] - d[1]) ** 2) for d in chosen)
-
     for anchor in [(0, y) for y in range(h)]:
-        chosen = [anchor]
-        seen = {anchor}
-
-        def grow(untried: list[tuple[int, int]]) -> Iterator[State]:
-            untried = list(untried)
-            while untried:
-                c = untried.pop()
-                if not apart(c, chosen):
-                    continue
-                chosen.append(c)
-                if len(chosen) == n:
-                    if min(p[1] for p in chosen) == 0:
-                        yield tuple(sorted(chosen))
-                else:
-                    fresh = [d for d in nbrs[c] if d > anchor and d not in seen]
-                    seen.update(fresh)
-                    yield from grow(untried + fresh)
-                    seen.difference_update(fresh)
-                chosen.pop()
-
         first = [d for d in nbrs[anchor] if d > anchor]
-        seen.update(first)
-        yield from grow(first)
+        yield from _grow(first, [anchor], {anchor, *first}, anchor, n, nbrs, model)
+
+
+def _grow(
+    untried: list[tuple[int, int]],
+    chosen: list[tuple[int, int]],
+    seen: set[tuple[int, int]],
+    anchor: tuple[int, int],
+    n: int,
+    nbrs: dict[tuple[int, int], list[tuple[int, int]]],
+    model: Model,
+) -> Iterator[State]:
+    """One level of Redelmeier's recursion: try each untried point in turn, never again after."""
+    untried = list(untried)
+    while untried:
+        c = untried.pop()
+        if not all(model.initially_apart((c[0] - d[0]) ** 2 + (c[1] - d[1]) ** 2) for d in chosen):
+            continue
+        chosen.append(c)
+        if len(chosen) == n:
+            if min(p[1] for p in chosen) == 0:
+                yield tuple(sorted(chosen))
+        else:
+            fresh = [d for d in nbrs[c] if d > anchor and d not in seen]
+            seen.update(fresh)
+            yield from _grow(untried + fresh, chosen, seen, anchor, n, nbrs, model)
+            seen.difference_update(fresh)
+        chosen.pop()
 
 
 def count_by_brute_force(n: int, window: tuple[int, int], model: Model) -> int:
@@ -82,9 +85,7 @@ def count_by_brute_force(n: int, window: tuple[int, int], model: Model) -> int:
     for combo in combinations(cells, n):
         if min(p[0] for p in combo) or min(p[1] for p in combo):
             continue
-        ok = all(
-            model.initially_apart((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) for a, b in combinations(combo, 2)
-        )
+        ok = all(model.initially_apart((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) for a, b in combinations(combo, 2))
         if ok and is_connected(combo, model):
             found.add(combo)
     return len(found)
@@ -99,10 +100,14 @@ def initial_array(n: int, window: tuple[int, int], model: Model) -> np.ndarray:
     what fits the window and de-duplicates by packed key. Rows are sorted by key.
     """
     codec = KeyCodec(n, window)
-    r = int(isqrt(model.view2))
-    disc = np.array([(dx, dy) for dx in range(-r, r + 1) for dy in range(-r, r + 1) if dx * dx + dy * dy <= model.view2])
+    r = isqrt(model.view2)
+    disc = np.array(
+        [(dx, dy) for dx in range(-r, r + 1) for dy in range(-r, r + 1) if dx * dx + dy * dy <= model.view2]
+    )
     level = np.zeros((1, 1, 2), dtype=np.int64)
     for k in range(1, n):
+        if not len(level):
+            return np.zeros((0, n, 2), dtype=np.int64)
         # every member + every disc offset: (m, k * |disc|, 2) candidates
         cand = (level[:, :, None, :] + disc[None, None, :, :]).reshape(len(level), -1, 2)
         diff = cand[:, :, None, :] - level[:, None, :, :]

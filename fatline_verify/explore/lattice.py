@@ -14,7 +14,8 @@ from ..config import Model
 
 
 def canonical(states: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Canonical forms of a batch ``(m, n, 2)`` and, per state, the order: ``canon[i, k] = translated[i, order[i, k]]``."""
+    """Canonical forms of a batch ``(m, n, 2)`` and, per state, the robot order:
+    ``canon[i, k] = translated[i, order[i, k]]``."""
     shifted = states - states.min(axis=1, keepdims=True)
     span = int(shifted[..., 1].max()) + 1 if shifted.size else 1
     codes = shifted[..., 0] * span + shifted[..., 1]

@@ -15,6 +15,7 @@ visits, for each robot, such a node or edge, and returns.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from itertools import pairwise
 
 import networkx as nx
 import numpy as np
@@ -24,6 +25,7 @@ from .lattice import canonical
 from .search import Exploration
 
 Labels = tuple[int, ...]
+Node = tuple[int, Labels]
 
 
 @dataclass(frozen=True, slots=True)
@@ -108,13 +110,14 @@ def _product(ex: Exploration, sub: nx.MultiDiGraph, start: int, labels: Labels) 
 def _fair_cycle(ex: Exploration, comp: nx.MultiDiGraph) -> Lasso | None:
     if comp.number_of_edges() == 0:
         return None
-    targets: list[tuple[str, object]] = []
+    # Per robot: a node to reach, then optionally an edge (to node, mask) to take from it.
+    targets: list[tuple[Node, tuple[Node, int] | None]] = []
     for robot in range(ex.n):
         disabled = next(
             (node for node in sorted(comp.nodes) if not (int(ex.enabled[node[0]]) >> node[1].index(robot) & 1)), None
         )
         if disabled is not None:
-            targets.append(("node", disabled))
+            targets.append((disabled, None))
             continue
         edge = next(
             (
@@ -126,27 +129,24 @@ def _fair_cycle(ex: Exploration, comp: nx.MultiDiGraph) -> Lasso | None:
         )
         if edge is None:
             return None
-        targets.append(("edge", edge))
+        targets.append((edge[0], (edge[1], edge[2])))
     start = min(comp.nodes)
     steps: list[tuple[int, int]] = []
     here = start
 
-    def walk(to: tuple[int, Labels]) -> None:
+    def walk(to: Node) -> None:
         nonlocal here
         path = nx.shortest_path(comp, here, to)
-        for u, v in zip(path, path[1:], strict=False):
+        for u, v in pairwise(path):
             k = min(data["mask"] for data in comp.get_edge_data(u, v).values())
             steps.append((u[0], k))
         here = to
 
-    for kind, what in targets:
-        if kind == "node":
-            walk(what)  # type: ignore[arg-type]
-        else:
-            u, v, k = what  # type: ignore[misc]
-            walk(u)
-            steps.append((u[0], k))
-            here = v
+    for node, then in targets:
+        walk(node)
+        if then is not None:
+            steps.append((node[0], then[1]))
+            here = then[0]
     walk(start)
     if not steps:  # the start node is a target of every robot; take its cheapest self-loop or cycle
         for u, v, data in comp.out_edges(start, data=True):

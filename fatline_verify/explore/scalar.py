@@ -16,7 +16,11 @@ from ..schedule import Collision, Disconnection, RmaMoved, decide_all, play_roun
 from ..swarm import is_goal
 from .expand import Expansion, activation_masks
 
-_FLAG_OF = {Collision: FLAG[Lemma.NO_COLLISION], Disconnection: FLAG[Lemma.CONNECTIVITY], RmaMoved: FLAG[Lemma.RMA_FIXED]}
+_FLAG_OF = {
+    Collision: FLAG[Lemma.NO_COLLISION],
+    Disconnection: FLAG[Lemma.CONNECTIVITY],
+    RmaMoved: FLAG[Lemma.RMA_FIXED],
+}
 
 
 def require_runnable(model: Model) -> Scheduler:

@@ -131,7 +131,11 @@ def explore(
                 progress(level, start + len(chunk), total)
         src, mask, key = np.concatenate(lvl_src), np.concatenate(lvl_mask), np.concatenate(lvl_key)
         flags, fits = np.concatenate(lvl_flags), np.concatenate(lvl_fits)
-        e_src.append(src), e_mask.append(mask), e_key.append(key), e_flags.append(flags), e_fits.append(fits)
+        e_src.append(src)
+        e_mask.append(mask)
+        e_key.append(key)
+        e_flags.append(flags)
+        e_fits.append(fits)
         usable = fits if after_violation == "continue" else fits & (flags == 0)
         ck, cs, cm = key[usable], src[usable], mask[usable]
         order = np.lexsort((cm, cs, ck))
@@ -146,7 +150,10 @@ def explore(
         level += 1
         new_ids = np.arange(total, total + len(ck), dtype=np.int64)
         frontier = codec.decode(ck)
-        keys.append(ck), states.append(frontier), parent.append(cs), pmask.append(cm)
+        keys.append(ck)
+        states.append(frontier)
+        parent.append(cs)
+        pmask.append(cm)
         depth.append(np.full(len(ck), level, dtype=np.int64))
         visited = np.sort(np.concatenate([visited, ck]))
         frontier_ids = new_ids

@@ -1,0 +1,227 @@
+"""The vectorised engine: a whole batch of states at once, with numpy.
+
+Two facts make it fast without giving up the executable model as the single source of truth:
+
+- A robot's decision depends only on its snapshot. Snapshots are packed into int64 keys (sorted
+  lattice cell codes of the visible robots), de-duplicated with ``np.unique``, and only snapshots
+  never seen before go through the model's own ``decide``; results are cached for the whole search.
+- Whether two robots collide in a round depends only on their offset and on each one's relative
+  path (or rest). Per state and pair there are three cases (i moves, j moves, both); these are
+  keyed the same way and only new keys go through :func:`fatline_verify.schedule.closest_dist2`.
+
+Subset enumeration, positions after, connectivity, the RMA and the goal are plain array code.
+"""
+
+from __future__ import annotations
+
+from math import isqrt
+
+import numpy as np
+
+from ..algorithm import decide
+from ..config import Model
+from ..options import Goal, Scheduler
+from ..properties import FLAG, Lemma
+from ..schedule import closest_dist2, collides
+from .expand import Expansion
+from .lattice import connected
+from .scalar import require_runnable
+
+_CORNER_NONE, _CORNER_H, _CORNER_V = 0, 1, 2
+
+
+class _Table:
+    """A growing int64-keyed table of small integer rows, looked up with ``searchsorted``."""
+
+    def __init__(self, width: int) -> None:
+        self.keys = np.zeros(0, dtype=np.int64)
+        self.rows = np.zeros((0, width), dtype=np.int64)
+
+    def missing(self, keys: np.ndarray) -> np.ndarray:
+        uniq = np.unique(keys)
+        if not len(self.keys):
+            return uniq
+        pos = np.minimum(np.searchsorted(self.keys, uniq), len(self.keys) - 1)
+        return uniq[self.keys[pos] != uniq]
+
+    def add(self, keys: np.ndarray, rows: np.ndarray) -> None:
+        allk = np.concatenate([self.keys, keys])
+        allr = np.concatenate([self.rows, rows])
+        order = np.argsort(allk, kind="stable")
+        self.keys, self.rows = allk[order], allr[order]
+
+    def get(self, keys: np.ndarray) -> np.ndarray:
+        return self.rows[np.searchsorted(self.keys, keys)]
+
+
+class FastEngine:
+    """Vectorised engine; produces exactly the scalar engine's expansion."""
+
+    name = "fast"
+
+    def __init__(self, model: Model) -> None:
+        self.model = model
+        self.scheduler = require_runnable(model)
+        self.rule = model.algorithm or decide
+        self.reach = isqrt(model.view2)
+        self.side = 2 * self.reach + 1
+        self.cell_bits = int(self.side * self.side).bit_length()
+        self.decisions = _Table(3)  # dx, dy, corner kind
+        self.pairs = _Table(1)  # collides?
+
+    # --- decisions --------------------------------------------------------------------------
+    def _snapshot_keys(self, states: np.ndarray) -> np.ndarray:
+        m, n, _ = states.shape
+        rel = states[:, None, :, :] - states[:, :, None, :]  # rel[s, i, j] = p_j - p_i
+        d2 = (rel * rel).sum(axis=-1)
+        visible = d2 <= self.model.view2
+        visible[:, np.arange(n), np.arange(n)] = False
+        sentinel = self.side * self.side
+        codes = np.where(visible, (rel[..., 0] + self.reach) * self.side + rel[..., 1] + self.reach, sentinel)
+        codes = np.sort(codes, axis=2)[:, :, : n - 1] if n > 1 else np.zeros((m, n, 0), dtype=np.int64)
+        if self.cell_bits * max(n - 1, 1) > 63:
+            raise ValueError(f"view radius {self.reach} with {n} robots does not pack snapshots into 63 bits")
+        key = np.zeros((m, n), dtype=np.int64)
+        for k in range(n - 1):
+            key = (key << self.cell_bits) | codes[:, :, k]
+        return key
+
+    def _decode_snapshot(self, key: int, n: int) -> list[tuple[int, int]]:
+        sentinel = self.side * self.side
+        mask = (1 << self.cell_bits) - 1
+        out = []
+        for k in range(n - 1):
+            code = (key >> (self.cell_bits * (n - 2 - k))) & mask
+            if code != sentinel:
+                out.append((code // self.side - self.reach, code % self.side - self.reach))
+        return out
+
+    def _destinations(self, states: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        n = states.shape[1]
+        keys = self._snapshot_keys(states)
+        new = self.decisions.missing(keys.ravel())
+        if len(new):
+            rows = np.zeros((len(new), 3), dtype=np.int64)
+            for r, key in enumerate(new.tolist()):
+                d = self.rule(self._decode_snapshot(key, n), self.model)
+                dest = d.destination
+                if any(not isinstance(v, int) for v in dest):
+                    raise ValueError(f"decision {dest} is off the lattice; the fast engine needs lattice moves")
+                corner = _CORNER_NONE
+                if len(d.path) == 3:
+                    corner = _CORNER_H if d.path[1][1] == 0 else _CORNER_V
+                rows[r] = (dest[0], dest[1], corner)
+            self.decisions.add(new, rows)
+        got = self.decisions.get(keys.ravel()).reshape(*keys.shape, 3)
+        return got[..., :2], got[..., 2]
+
+    # --- collisions -------------------------------------------------------------------------
+    def _path(self, dest: tuple[int, int], corner: int) -> tuple[tuple[int, int], ...]:
+        if dest == (0, 0):
+            return ((0, 0),)
+        if corner == _CORNER_H:
+            return ((0, 0), (dest[0], 0), dest)
+        if corner == _CORNER_V:
+            return ((0, 0), (0, dest[1]), dest)
+        return ((0, 0), dest)
+
+    def _pair_collisions(self, states: np.ndarray, dest: np.ndarray, corner: np.ndarray) -> np.ndarray:
+        """(m, n, n, 3) bool: pair i<j collides when only i moves [0], only j [1], both [2]."""
+        m, n, _ = states.shape
+        ii, jj = np.triu_indices(n, 1)
+        off = states[:, jj, :] - states[:, ii, :]  # (m, p, 2)
+        di, dj = dest[:, ii, :], dest[:, jj, :]
+        ci, cj = corner[:, ii], corner[:, jj]
+        zero = np.zeros_like(di)
+        cases = [(di, ci, zero, 0 * cj), (zero, 0 * ci, dj, cj), (di, ci, dj, cj)]
+        out = np.zeros((m, n, n, 3), dtype=bool)
+        for c, (a, ca, b, cb) in enumerate(cases):
+            fields = [off[..., 0], off[..., 1], a[..., 0], a[..., 1], b[..., 0], b[..., 1]]
+            key = np.zeros(off.shape[:2], dtype=np.int64)
+            for f in fields:
+                key = (key << 8) | (f + 128)
+            key = (key << 2 | ca) << 2 | cb
+            new = self.pairs.missing(key.ravel())
+            if len(new):
+                self.pairs.add(new, np.array([[self._pair_from_key(int(k))] for k in new.tolist()], dtype=np.int64))
+            hit = self.pairs.get(key.ravel()).reshape(key.shape).astype(bool)
+            out[:, ii, jj, c] = hit
+        return out
+
+    def _pair_from_key(self, key: int) -> int:
+        cb, key = key & 3, key >> 2
+        ca, key = key & 3, key >> 2
+        vals = []
+        for _ in range(6):
+            vals.append((key & 0xFF) - 128)
+            key >>= 8
+        bdy, bdx, ady, adx, oy, ox = vals
+        pi = None if (adx, ady) == (0, 0) else self._path((adx, ady), ca)
+        pj = None if (bdx, bdy) == (0, 0) else tuple((x + ox, y + oy) for x, y in self._path((bdx, bdy), cb))
+        return int(collides(closest_dist2(pi, pj, (0, 0), (ox, oy), self.model), self.model))
+
+    # --- goal -------------------------------------------------------------------------------
+    def _goal(self, states: np.ndarray) -> np.ndarray:
+        goal = self.model.options.goal
+        x = states[..., 0]
+        if goal is Goal.VERTICAL_LINE:
+            return (x == x[:, :1]).all(axis=1)
+        a = states[:, :, None, :]  # line through a and b, test point c
+        b = states[:, None, :, :]
+        ab = b - a  # (m, n, n, 2)
+        ac = states[:, None, None, :, :] - a[:, :, :, None, :]  # (m, n, 1->n, n, 2) broadcast
+        crossv = ab[..., None, 0] * ac[..., 1] - ab[..., None, 1] * ac[..., 0]  # (m, n, n, n)
+        distinct = (ab != 0).any(axis=-1)
+        if goal is Goal.ANY_LINE:
+            line = (crossv == 0).all(axis=-1) & distinct
+            all_same = (states == states[:, :1]).all(axis=(1, 2))
+            return line.any(axis=(1, 2)) | all_same | (states.shape[1] <= 2)
+        w = 2 * self.model.radius
+        limit = w * w * (ab * ab).sum(axis=-1)
+        one_side = (crossv >= 0).all(axis=-1) | (crossv <= 0).all(axis=-1)
+        fits = one_side & (crossv * crossv <= limit[..., None]).all(axis=-1) & distinct
+        uniq = np.sort(states[..., 0] * 1_000_003 + states[..., 1], axis=1)
+        few = (np.diff(uniq, axis=1) != 0).sum(axis=1) + 1 < 3
+        return fits.any(axis=(1, 2)) | few
+
+    # --- the expansion ----------------------------------------------------------------------
+    def expand(self, states: np.ndarray) -> Expansion:
+        n = states.shape[1]
+        states = states.astype(np.int64)
+        dest, corner = self._destinations(states)
+        moves = (dest != 0).any(axis=-1)
+        bits = 1 << np.arange(n, dtype=np.int64)
+        enabled = (moves * bits).sum(axis=1)
+        goal = self._goal(states)
+
+        all_masks = np.arange(1, 1 << n, dtype=np.int64)
+        if self.scheduler is Scheduler.FSYNC:
+            valid = (all_masks[None, :] == enabled[:, None]) & (enabled[:, None] != 0)
+        elif self.scheduler is Scheduler.CENTRALIZED:
+            single = (all_masks & (all_masks - 1)) == 0
+            valid = ((all_masks[None, :] & ~enabled[:, None]) == 0) & single[None, :]
+        else:
+            valid = (all_masks[None, :] & ~enabled[:, None]) == 0
+        src, col = np.nonzero(valid)
+        mask = all_masks[col]
+        active = (mask[:, None] & bits[None, :]) != 0  # (t, n)
+        after = states[src] + dest[src] * active[..., None]
+
+        flags = np.zeros(len(src), dtype=np.int64)
+        pair = self._pair_collisions(states, dest, corner)  # (m, n, n, 3)
+        ai = active[:, :, None]
+        aj = active[:, None, :]
+        case = np.where(ai & aj, 2, np.where(ai, 0, 1))  # (t, n, n)
+        relevant = np.triu(np.ones((n, n), dtype=bool), 1)[None] & (ai | aj)
+        hit = np.take_along_axis(pair[src], case[..., None], axis=-1)[..., 0] & relevant
+        flags |= np.where(hit.any(axis=(1, 2)), FLAG[Lemma.NO_COLLISION], 0)
+
+        before_ok = connected(states, self.model)
+        lost = before_ok[src] & ~connected(after, self.model)
+        flags |= np.where(lost, FLAG[Lemma.CONNECTIVITY], 0)
+
+        rma = states[..., 0].max(axis=1)[src]
+        xb, xa = states[src][..., 0], after[..., 0]
+        crossed = (xa > rma[:, None]) | ((xb == rma[:, None]) & (xa != rma[:, None]))
+        flags |= np.where(crossed.any(axis=1), FLAG[Lemma.RMA_FIXED], 0)
+        return Expansion(enabled, goal, src.astype(np.int64), mask, after, flags)

@@ -1,0 +1,76 @@
+"""``fatline check`` through the command line."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from fatline_verify.cli import main
+from tests.test_cli import assert_one_line_error, run_cli
+
+
+def test_check_default_model_writes_replayable_traces_and_json(capsys, tmp_path):
+    traces = tmp_path / "traces"
+    out_json = tmp_path / "r.json"
+    code, out, _ = run_cli(
+        capsys, "check", "--robots", "2..3", "--window", "7x7", "--traces", str(traces), "--json", str(out_json), "-q"
+    )
+    assert code == 1
+    assert "VIOLATED" in out
+    data = json.loads(out_json.read_text())
+    assert {x["lemma"] for x in data["lemmas"]} == {
+        "connectivity",
+        "no-collision",
+        "progress",
+        "rma-fixed",
+        "approach",
+        "termination",
+    }
+    assert [s["robots"] for s in data["searches"]] == [2, 3]
+    written = sorted(traces.glob("*.json"))
+    assert written
+    assert all(x["trace"] for x in data["lemmas"] if x["verdict"] == "VIOLATED")
+    code, out, _ = run_cli(capsys, "replay", *map(str, written))
+    assert code == 0
+    assert out.count("reproduces") == len(written)
+
+
+def test_check_exit_0_when_everything_holds(capsys, tmp_path):
+    # One robot: alone, already a line.
+    code, out, _ = run_cli(capsys, "check", "--robots", "1", "--window", "3x3", "--traces", str(tmp_path), "-q")
+    assert code == 0
+    assert out.count("HOLDS_WITHIN_BOUNDS") == 6
+
+
+@pytest.mark.parametrize(
+    ("args", "fragment"),
+    [
+        (["--robots", "0"], "robots='0'"),
+        (["--robots", "4..2"], "robots='4..2'"),
+        (["--robots", "x"], "robots='x'"),
+        (["--window", "9"], "window='9'"),
+        (["--window", "0x5"], "window='0x5'"),
+        (["--robots", "5", "--window", "200x200"], "does not pack into 63 bits"),
+        (["--robots", "3", "--window", "2x2"], "no initial configuration fits"),
+        (["--max-states", "0"], "max-states=0"),
+        (["nope.toml"], "model='nope.toml'"),
+    ],
+)
+def test_check_bad_bounds(capsys, tmp_path, args, fragment):
+    code, _, err = run_cli(capsys, "check", *args, "--traces", str(tmp_path / "t"), "-q")
+    assert_one_line_error(code, err, fragment)
+
+
+def test_check_refuses_a_file_as_traces_dir(capsys, tmp_path):
+    f = tmp_path / "file"
+    f.write_text("keep")
+    code, _, err = run_cli(capsys, "check", "--robots", "2", "--traces", str(f), "-q")
+    assert_one_line_error(code, err, "not a directory")
+    assert f.read_text() == "keep"
+
+
+def test_help_states_exit_codes(capsys):
+    assert main(["check", "--help"]) == 0
+    out = capsys.readouterr().out
+    assert "exit codes" in out and "INCONCLUSIVE" in out
