@@ -125,8 +125,43 @@ class FastEngine:
             return ((0, 0), (0, dest[1]), dest)
         return ((0, 0), dest)
 
+    def _case_table(self, n: int) -> np.ndarray:
+        """(2^n, P): for each activation mask and pair i<j, the case that applies (-1: neither moves)."""
+        ii, jj = np.triu_indices(n, 1)
+        masks = np.arange(1 << n, dtype=np.int64)
+        a_i = (masks[:, None] >> ii[None, :]) & 1 == 1
+        a_j = (masks[:, None] >> jj[None, :]) & 1 == 1
+        return np.where(a_i & a_j, 2, np.where(a_i, 0, np.where(a_j, 1, -1)))
+
+    def _collision_words(self, states: np.ndarray, dest: np.ndarray, corner: np.ndarray) -> np.ndarray:
+        """(m,) uint64: bit ``mask`` is set when activating ``mask`` makes some pair collide (n <= 6)."""
+        n = states.shape[1]
+        pairs = self._pair_collisions(states, dest, corner)  # (m, P, 3)
+        case = self._case_table(n)
+        weights = np.uint64(1) << np.arange(1 << n, dtype=np.uint64)
+        word = np.zeros(len(states), dtype=np.uint64)
+        for p in range(case.shape[1]):
+            for c in range(3):
+                masks_here = np.bitwise_or.reduce(weights[case[:, p] == c]) if (case[:, p] == c).any() else 0
+                word |= np.where(pairs[:, p, c], np.uint64(masks_here), np.uint64(0))
+        return word
+
+    def _collisions_by_mask(self, states: np.ndarray, dest: np.ndarray, corner: np.ndarray) -> np.ndarray:
+        """(m, 2^n) bool: whether activating ``mask`` makes some pair collide.
+
+        Built from the per-pair cases with a static table saying, for each mask and pair, which
+        case applies (-1: neither robot of the pair is active)."""
+        m, n, _ = states.shape
+        pairs = self._pair_collisions(states, dest, corner)  # (m, P, 3)
+        case = self._case_table(n)
+        out = np.zeros((m, 1 << n), dtype=bool)
+        for c in range(3):
+            sel = case == c  # (2^n, P)
+            out |= (pairs[:, None, :, c] & sel[None, :, :]).any(axis=2)
+        return out
+
     def _pair_collisions(self, states: np.ndarray, dest: np.ndarray, corner: np.ndarray) -> np.ndarray:
-        """(m, n, n, 3) bool: pair i<j collides when only i moves [0], only j [1], both [2]."""
+        """(m, P, 3) bool for the pairs i<j: collides when only i moves [0], only j [1], both [2]."""
         m, n, _ = states.shape
         ii, jj = np.triu_indices(n, 1)
         off = states[:, jj, :] - states[:, ii, :]  # (m, p, 2)
@@ -134,7 +169,7 @@ class FastEngine:
         ci, cj = corner[:, ii], corner[:, jj]
         zero = np.zeros_like(di)
         cases = [(di, ci, zero, 0 * cj), (zero, 0 * ci, dj, cj), (di, ci, dj, cj)]
-        out = np.zeros((m, n, n, 3), dtype=bool)
+        out = np.zeros((m, len(ii), 3), dtype=bool)
         for c, (a, ca, b, cb) in enumerate(cases):
             fields = [off[..., 0], off[..., 1], a[..., 0], a[..., 1], b[..., 0], b[..., 1]]
             key = np.zeros(off.shape[:2], dtype=np.int64)
@@ -145,7 +180,7 @@ class FastEngine:
             if len(new):
                 self.pairs.add(new, np.array([[self._pair_from_key(int(k))] for k in new.tolist()], dtype=np.int64))
             hit = self.pairs.get(key.ravel()).reshape(key.shape).astype(bool)
-            out[:, ii, jj, c] = hit
+            out[:, :, c] = hit
         return out
 
     def _pair_from_key(self, key: int) -> int:
@@ -208,13 +243,12 @@ class FastEngine:
         after = states[src] + dest[src] * active[..., None]
 
         flags = np.zeros(len(src), dtype=np.int64)
-        pair = self._pair_collisions(states, dest, corner)  # (m, n, n, 3)
-        ai = active[:, :, None]
-        aj = active[:, None, :]
-        case = np.where(ai & aj, 2, np.where(ai, 0, 1))  # (t, n, n)
-        relevant = np.triu(np.ones((n, n), dtype=bool), 1)[None] & (ai | aj)
-        hit = np.take_along_axis(pair[src], case[..., None], axis=-1)[..., 0] & relevant
-        flags |= np.where(hit.any(axis=(1, 2)), FLAG[Lemma.NO_COLLISION], 0)
+        if n <= 6:  # one bit per activation mask fits an unsigned 64-bit word
+            table = self._collision_words(states, dest, corner)
+            hit = (table[src] >> mask.astype(np.uint64)) & np.uint64(1) == 1
+        else:
+            hit = self._collisions_by_mask(states, dest, corner)[src, mask]
+        flags |= np.where(hit, FLAG[Lemma.NO_COLLISION], 0)
 
         before_ok = connected(states, self.model)
         lost = before_ok[src] & ~connected(after, self.model)

@@ -95,30 +95,44 @@ def initial_array(n: int, window: tuple[int, int], model: Model) -> np.ndarray:
     """The same configurations as :func:`initial_configurations`, built level by level with numpy.
 
     Every connected graph has a vertex whose removal leaves it connected, so every canonical
-    (k+1)-configuration extends some canonical k-configuration by one visible point; each level
-    extends every k-configuration by every visible, non-conflicting point, re-canonicalises, keeps
-    what fits the window and de-duplicates by packed key. Rows are sorted by key.
+    (k+1)-configuration extends some canonical k-configuration by one visible point. Each level marks,
+    per k-configuration, on a grid around it, the points some member sees, unmarks those too close to
+    a member or that would make the bounding box outgrow the window, adds each remaining point,
+    re-canonicalises and de-duplicates by packed key. Rows are sorted by key.
     """
-    codec = KeyCodec(n, window)
-    r = isqrt(model.view2)
-    disc = np.array(
-        [(dx, dy) for dx in range(-r, r + 1) for dy in range(-r, r + 1) if dx * dx + dy * dy <= model.view2]
-    )
+    w, h = window
+    r = int(isqrt(model.view2))
+    offsets = [(dx, dy) for dx in range(-r, r + 1) for dy in range(-r, r + 1)]
+    seen_off = [o for o in offsets if o[0] * o[0] + o[1] * o[1] <= model.view2]
+    near_off = [o for o in offsets if o[0] * o[0] + o[1] * o[1] < model.apart2]
     level = np.zeros((1, 1, 2), dtype=np.int64)
+    gx, gy = w + 2 * r, h + 2 * r  # grid cell (i, j) is the point (i - r, j - r)
     for k in range(1, n):
         if not len(level):
             return np.zeros((0, n, 2), dtype=np.int64)
-        # every member + every disc offset: (m, k * |disc|, 2) candidates
-        cand = (level[:, :, None, :] + disc[None, None, :, :]).reshape(len(level), -1, 2)
-        diff = cand[:, :, None, :] - level[:, None, :, :]
-        ok = ((diff * diff).sum(axis=-1) >= model.apart2).all(axis=2)
-        rows, cols = np.nonzero(ok)
-        grown = np.concatenate([level[rows], cand[rows, cols][:, None, :]], axis=1)
+        m = len(level)
+        rows = np.arange(m)
+        visible = np.zeros((m, gx, gy), dtype=bool)
+        blocked = np.zeros((m, gx, gy), dtype=bool)
+        for j in range(k):
+            x, y = level[:, j, 0] + r, level[:, j, 1] + r
+            for dx, dy in seen_off:
+                visible[rows, x + dx, y + dy] = True
+            for dx, dy in near_off:
+                blocked[rows, x + dx, y + dy] = True
+        lo, hi = level.min(axis=1), level.max(axis=1)  # (m, 2)
+        xs, ys = np.arange(gx) - r, np.arange(gy) - r
+        fit_x = (xs[None, :] >= hi[:, :1] - (w - 1)) & (xs[None, :] <= lo[:, :1] + (w - 1))
+        fit_y = (ys[None, :] >= hi[:, 1:] - (h - 1)) & (ys[None, :] <= lo[:, 1:] + (h - 1))
+        cand = visible & ~blocked & fit_x[:, :, None] & fit_y[:, None, :]
+        row, cx, cy = np.nonzero(cand)
+        point = np.stack([cx - r, cy - r], axis=-1)[:, None, :]
+        grown = np.concatenate([level[row], point], axis=1)
         canon, _ = canonical(grown)
-        sub = KeyCodec(k + 1, window)
-        canon = canon[sub.fits(canon)]
-        keys, first = np.unique(sub.encode(canon), return_index=True)
+        codec = KeyCodec(k + 1, window)
+        _, first = np.unique(codec.encode(canon), return_index=True)
         level = canon[first]
-    keys = codec.encode(level) if n > 1 else np.zeros(1, dtype=np.int64)
-    order = np.argsort(keys)
+    if n == 1:
+        return level
+    order = np.argsort(KeyCodec(n, window).encode(level))
     return level[order]

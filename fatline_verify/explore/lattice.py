@@ -64,19 +64,25 @@ class KeyCodec:
 
 
 def connected(states: np.ndarray, model: Model) -> np.ndarray:
-    """Per state, whether its visibility graph is connected (boolean reachability by squaring)."""
+    """Per state, whether its visibility graph is connected: a flood fill over int64 bitmasks."""
     m, n, _ = states.shape
     if n <= 1:
         return np.ones(m, dtype=bool)
-    diff = states[:, :, None, :] - states[:, None, :, :]
-    adj = (diff * diff).sum(axis=-1) <= model.view2
-    reach = adj.copy()
-    steps = 1
-    while steps < n:
-        reach = reach | (np.einsum("mij,mjk->mik", reach.astype(np.uint8), adj.astype(np.uint8)) > 0)
-        steps *= 2
-        adj = reach
-    return reach[:, 0, :].all(axis=1)
+    x = states[..., 0].astype(np.int32)
+    y = states[..., 1].astype(np.int32)
+    dx = x[:, :, None] - x[:, None, :]
+    dy = y[:, :, None] - y[:, None, :]
+    adj = dx * dx + dy * dy <= model.view2
+    bits = np.zeros((m, n), dtype=np.int64)
+    for j in range(n):
+        bits |= adj[:, :, j].astype(np.int64) << j  # (m, n) neighbour sets
+    reach = np.ones(m, dtype=np.int64)
+    for _ in range(n - 1):
+        grown = reach.copy()
+        for i in range(n):
+            grown |= np.where((reach >> i) & 1 == 1, bits[:, i], 0)
+        reach = grown
+    return reach == (1 << n) - 1
 
 
 def min_pair_dist2(states: np.ndarray) -> np.ndarray:
