@@ -51,8 +51,17 @@ def main() -> None:
     print("\n".join(table(HEADERS, rows)))
 
 
-HEADERS = ["bound", "initial", "states", "transitions", "fast s", "fast states/s", "scalar s", "scalar states/s",
-           "speed-up"]
+HEADERS = [
+    "bound",
+    "initial",
+    "states",
+    "transitions",
+    "fast s",
+    "fast states/s",
+    "scalar s",
+    "scalar states/s",
+    "speed-up",
+]
 
 if __name__ == "__main__":
     main()

@@ -70,6 +70,8 @@ class Model:
     bounds: Bounds = field(default_factory=Bounds)
     description: str = ""
     source: str = ""
+    expected: dict[str, str] = field(default_factory=dict, compare=False)
+    """Golden verdicts at the model's own bounds, lemma -> verdict (worst over robot counts)."""
     algorithm: Callable[..., Any] | None = field(default=None, repr=False, compare=False)
     """A replacement for :func:`fatline_verify.algorithm.decide` (seeded-bug tests); ``None`` is the paper's."""
 
@@ -126,7 +128,9 @@ class Model:
         return f"{self.name}: rad_v={format_number(p.rad_v)}, q={p.q}, delta={format_number(p.delta)}; {readings}"
 
 
-_TOP_KEYS = {"name", "description", "parameters", "options", "bounds"}
+_TOP_KEYS = {"name", "description", "parameters", "options", "bounds", "expected"}
+_LEMMAS = ("connectivity", "no-collision", "progress", "rma-fixed", "approach", "termination")
+_VERDICTS = ("VIOLATED", "HOLDS_WITHIN_BOUNDS", "PROVED", "INCONCLUSIVE")
 _PARAM_KEYS = {"rad_v", "q", "delta"}
 _BOUND_KEYS = {"robots", "window", "max_states"}
 
@@ -197,13 +201,20 @@ def model_from_mapping(data: dict[str, object], *, source: str = "", default_nam
         if not isinstance(ms, int) or isinstance(ms, bool) or ms < 1:
             raise InvalidModel(f"bounds.max_states={ms!r}: expected a positive integer")
         bounds = Bounds(bounds.robots, bounds.window, ms)
+    expected_raw = data.get("expected", {})
+    if not isinstance(expected_raw, dict):
+        raise InvalidModel(f"expected={expected_raw!r}: expected a table of lemma = verdict")
+    _unknown(expected_raw, set(_LEMMAS), "expected.")
+    for lemma, verdict in expected_raw.items():
+        if verdict not in _VERDICTS:
+            raise InvalidModel(f"expected.{lemma}={verdict!r}: unknown verdict; expected one of {', '.join(_VERDICTS)}")
     name = data.get("name", default_name)
     if not isinstance(name, str) or not name:
         raise InvalidModel(f"name={name!r}: expected a non-empty string")
     description = data.get("description", "")
     if not isinstance(description, str):
         raise InvalidModel(f"description={description!r}: expected a string")
-    return Model(name, options, parameters, bounds, description, source)
+    return Model(name, options, parameters, bounds, description, source, dict(expected_raw))
 
 
 def resolve_model_path(spec: str | Path) -> Path:

@@ -182,3 +182,13 @@ def test_console_script_runs(tmp_path):
     )
     assert result.returncode == 2
     assert result.stderr.count("\n") == 1 and "overlap" in result.stderr
+
+
+def test_bad_expected_verdicts(capsys, tmp_path):
+    path = tmp_path / "m.toml"
+    path.write_text('[expected]\nprogress = "MAYBE"\n')
+    code, _, err = run_cli(capsys, "check", str(path), "-q")
+    assert_one_line_error(code, err, "expected.progress='MAYBE': unknown verdict")
+    path.write_text('[expected]\nhappiness = "VIOLATED"\n')
+    code, _, err = run_cli(capsys, "check", str(path), "-q")
+    assert_one_line_error(code, err, "expected.happiness='VIOLATED': unknown key")

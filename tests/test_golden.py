@@ -1,0 +1,27 @@
+"""The golden corpus: each shipped model file carries the verdicts `fatline check` gives at its own
+bounds; a change of behaviour shows up here."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from fatline_verify.config import load_model, shipped_models
+from fatline_verify.properties import Lemma
+from tests.test_cli import run_cli
+
+
+@pytest.mark.parametrize("path", shipped_models(), ids=lambda p: p.stem)
+def test_shipped_model_verdicts(capsys, tmp_path, path):
+    model = load_model(path)
+    assert set(model.expected) == {lemma.value for lemma in Lemma}
+    out_json = tmp_path / "r.json"
+    run_cli(capsys, "check", str(path), "--json", str(out_json), "--traces", str(tmp_path / "t"), "-q")
+    data = json.loads(out_json.read_text())
+    rank = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
+    worst: dict[str, str] = {}
+    for row in data["lemmas"]:
+        if row["lemma"] not in worst or rank[row["verdict"]] < rank[worst[row["lemma"]]]:
+            worst[row["lemma"]] = row["verdict"]
+    assert worst == model.expected
