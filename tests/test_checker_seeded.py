@@ -55,6 +55,18 @@ MUTANTS = {
 }
 
 
+def slide_down():
+    """Every robot that sees anything steps down 2, under fsync: the swarm slides away forever."""
+
+    def rule(snapshot, model):
+        if not snapshot:
+            return Decision(Rule.ALONE, (0, 0), ((0, 0),), ())
+        return Decision(Rule.SCENARIO_4_I_EMPTY, (0, -2), ((0, 0), (0, -2)), ())
+
+    model = replace(make_model(scheduler="fsync"), algorithm=rule)
+    return model, check(model, (2, 2), (7, 7), engine="fast")
+
+
 def run(target, **readings):
     model = make_model(path="vertical-then-horizontal", **readings)
     model = replace(model, algorithm=toy(target))
@@ -95,13 +107,7 @@ def test_freezing_breaks_progress_and_with_it_every_liveness_lemma():
 def test_a_swarm_that_slides_down_forever_breaks_termination_with_a_fair_lasso():
     # Both robots step down 2 whenever they see anything: the canonical state repeats (a translation),
     # every robot is activated on the cycle, the line never forms.
-    def rule(snapshot, model):
-        if not snapshot:
-            return Decision(Rule.ALONE, (0, 0), ((0, 0),), ())
-        return Decision(Rule.SCENARIO_4_I_EMPTY, (0, -2), ((0, 0), (0, -2)), ())
-
-    model = replace(make_model(scheduler="fsync"), algorithm=rule)
-    result = check(model, (2, 2), (7, 7), engine="fast")
+    model, result = slide_down()
     found = verdicts(result)
     assert found[Lemma.TERMINATION] is Verdict.VIOLATED
     assert found[Lemma.PROGRESS] is Verdict.HOLDS_WITHIN_BOUNDS
@@ -124,13 +130,7 @@ def test_approach_fails_alone_when_the_goal_is_already_met():
 
 
 def test_lasso_replay_rejects_a_broken_loop():
-    def rule(snapshot, model):
-        if not snapshot:
-            return Decision(Rule.ALONE, (0, 0), ((0, 0),), ())
-        return Decision(Rule.SCENARIO_4_I_EMPTY, (0, -2), ((0, 0), (0, -2)), ())
-
-    model = replace(make_model(scheduler="fsync"), algorithm=rule)
-    result = check(model, (2, 2), (7, 7), engine="fast")
+    model, result = slide_down()
     witness = next(r for r in result.results if r.lemma is Lemma.TERMINATION).witness
     witness["rounds"][-1]["active"] = [0]  # only one robot steps down: the loop no longer closes
     from fatline_verify.errors import TraceDidNotReproduce

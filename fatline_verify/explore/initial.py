@@ -101,7 +101,7 @@ def initial_array(n: int, window: tuple[int, int], model: Model) -> np.ndarray:
     re-canonicalises and de-duplicates by packed key. Rows are sorted by key.
     """
     w, h = window
-    r = int(isqrt(model.view2))
+    r = isqrt(model.view2)
     offsets = [(dx, dy) for dx in range(-r, r + 1) for dy in range(-r, r + 1)]
     seen_off = [o for o in offsets if o[0] * o[0] + o[1] * o[1] <= model.view2]
     near_off = [o for o in offsets if o[0] * o[0] + o[1] * o[1] < model.apart2]
