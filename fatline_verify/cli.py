@@ -20,7 +20,7 @@ from .numbers import parse_number
 from .options import CATALOGUE, Scheduler
 from .simulate import Outcome, simulate
 from .swarm import State
-from .text import check_lines, explain_lines, trace_lines
+from .text import check_lines, explain_lines, prove_lines, trace_lines
 from .trace import check_replay, load_trace, run_to_json, write_trace
 
 if TYPE_CHECKING:
@@ -157,6 +157,48 @@ def cmd_check(args: argparse.Namespace) -> int:
     return EXIT_INCONCLUSIVE if result.any_inconclusive else EXIT_OK
 
 
+def cmd_prove(args: argparse.Namespace) -> int:
+    from .prover import prove, results_json
+    from .smt.obligations import LEMMAS
+
+    model = load_model(args.model)
+    if args.timeout <= 0:
+        raise InvalidInput(f"timeout={args.timeout}: expected a positive number of seconds")
+    if args.slots < 1:
+        raise InvalidInput(f"slots={args.slots}: expected at least 1 slot robot")
+    lemmas = LEMMAS if args.lemma == "all" else (args.lemma,)
+    out = Path(args.out) / model.name
+    if out.exists() and not out.is_dir():
+        raise InvalidInput(f"out={args.out!r}: {out} is not a directory; expected a directory for proof artefacts")
+    traces_dir = Path(args.traces) if args.traces else out / "traces"
+    if traces_dir.exists() and not traces_dir.is_dir():
+        raise InvalidInput(f"traces={str(traces_dir)!r}: exists and is not a directory; expected a directory")
+    done = []
+
+    def tick(label: str) -> None:
+        done.append(label)
+        if not args.quiet and sys.stderr.isatty():
+            print(f"\r[{len(done)}] {label:60}", end="", file=sys.stderr, flush=True)
+
+    results = prove(model, lemmas, slots=args.slots, timeout=args.timeout, out=out, jobs=args.jobs, progress=tick)
+    if not args.quiet and sys.stderr.isatty():
+        print(file=sys.stderr)
+    traces: dict[str, str] = {}
+    for r in results:
+        if r.witness is not None:
+            path = traces_dir / f"{model.name}-prove-{r.lemma}-{r.form}-{r.rule}.json"
+            write_trace(r.witness, path)
+            traces[f"{r.lemma}/{r.form}-{r.rule}"] = str(path)
+    data = results_json(model, results, traces)
+    _write_json(out / "results.json", data)
+    _print(prove_lines(model, results, traces, out))
+    if args.json:
+        _write_json(Path(args.json), data)
+    if any(r.verdict.value == "VIOLATED" for r in results):
+        return EXIT_FOUND
+    return EXIT_INCONCLUSIVE if any(r.verdict.value == "INCONCLUSIVE" for r in results) else EXIT_OK
+
+
 def _with_q(model: Model, q: int) -> Model:
     from dataclasses import replace
 
@@ -279,6 +321,18 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--traces", default="traces", help="directory for witness traces (default: traces)")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     p.set_defaults(handler=cmd_check)
+
+    p = add("prove", "prove or refute the collision and connectivity lemmas per rule with z3, for any swarm size")
+    p.add_argument("model", nargs="?", default="paper", help="model file or shipped model name (default: paper)")
+    p.add_argument("--lemma", choices=["no-collision", "connectivity", "all"], default="all")
+    p.add_argument("--timeout", type=float, default=10.0, help="solver seconds per obligation (default 10)")
+    p.add_argument("--slots", type=int, default=3, help="symbolic robots besides r (default 3)")
+    p.add_argument("--jobs", type=int, help="obligations solved at once (default: the number of cores)")
+    p.add_argument("--out", default="proofs", help="directory for .smt2 files and results.json (default: proofs)")
+    p.add_argument("--traces", help="directory for counterexample traces (default: OUT/MODEL/traces)")
+    p.add_argument("--json", help="also write the results as JSON to this file")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress line")
+    p.set_defaults(handler=cmd_prove)
 
     p = add("simulate", "run one swarm under a seeded, fair random scheduler")
     p.add_argument("model", nargs="?", default="paper", help="model file or shipped model name (default: paper)")

@@ -144,3 +144,24 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
     else:
         lines.append("States reached through violating rounds are explored further (--after-violation continue).")
     return lines
+
+
+def prove_lines(model: Any, results: list[Any], traces: dict[str, str], out: Any) -> list[str]:
+    """The summary of ``fatline prove``."""
+    rows = [
+        [
+            r.lemma,
+            r.form,
+            r.rule,
+            r.verdict.value,
+            str(r.slots),
+            f"{r.seconds:.1f}",
+            r.reason,
+            traces.get(f"{r.lemma}/{r.form}-{r.rule}", ""),
+        ]
+        for r in results
+    ]
+    lines = [f"model {model.describe()}", ""]
+    lines += table(["lemma", "form", "rule", "verdict", "slots", "seconds", "detail", "trace"], rows)
+    lines += ["", f"obligations (SMT-LIB2, each with its any-size argument) and results.json in {out}"]
+    return lines

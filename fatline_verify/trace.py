@@ -161,6 +161,12 @@ def derive_violation(run: Run, rounds: list[dict[str, Any]], focus: str | None) 
             return None
         match = next((v for v in rounds[-1]["violations"] if v["property"] == focus), None)
         return None if match is None else {**match, "round": n_rounds}
+    if focus == "connectivity-edge":
+        lost = lost_edges(run.rounds[-1], run.model) if run.rounds else []
+        if not lost:
+            return None
+        (i, j), d2 = lost[0]
+        return {"property": focus, "robots": [i, j], "distance2_after": [_area(run.model, d2)], "round": n_rounds}
     if focus == "progress":
         return {"property": focus, "robots": [], "round": n_rounds} if run.outcome is Outcome.DEADLOCK else None
     if focus == "termination":
@@ -171,6 +177,19 @@ def derive_violation(run: Run, rounds: list[dict[str, Any]], focus: str | None) 
         stuck = approach_stuck(run) if run.outcome in (Outcome.CYCLE, Outcome.DEADLOCK, Outcome.GOAL) else []
         return {"property": focus, "robots": stuck, "round": n_rounds} if stuck else None
     raise InvalidTrace(f"violation.property={focus!r}: unknown lemma")
+
+
+def lost_edges(r: RoundResult, model: Model) -> list[tuple[tuple[int, int], Number]]:
+    """Pairs that saw each other before the round and do not after it, with their squared distance after."""
+    out = []
+    for i in range(len(r.before)):
+        for j in range(i + 1, len(r.before)):
+            b, a = r.before, r.after
+            before = (b[i][0] - b[j][0]) ** 2 + (b[i][1] - b[j][1]) ** 2
+            after = (a[i][0] - a[j][0]) ** 2 + (a[i][1] - a[j][1]) ** 2
+            if model.sees(before) and not model.sees(after):
+                out.append(((i, j), after))
+    return out
 
 
 def _loop_meets_goal(run: Run) -> bool:

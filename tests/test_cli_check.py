@@ -74,3 +74,43 @@ def test_help_states_exit_codes(capsys):
     assert main(["check", "--help"]) == 0
     out = capsys.readouterr().out
     assert "exit codes" in out and "INCONCLUSIVE" in out
+
+
+@pytest.mark.parametrize(
+    ("args", "fragment"),
+    [
+        (["--timeout", "0"], "timeout=0.0"),
+        (["--slots", "0"], "slots=0"),
+        (["--lemma", "happiness"], "invalid choice"),
+    ],
+)
+def test_prove_bad_input(capsys, tmp_path, args, fragment):
+    code, _, err = run_cli(capsys, "prove", *args, "--out", str(tmp_path / "p"), "-q")
+    assert code == 2
+    assert fragment in err
+    assert "Traceback" not in err
+
+
+def test_prove_refuses_a_file_as_out_dir(capsys, tmp_path):
+    f = tmp_path / "p"
+    f.mkdir()
+    (f / "paper").write_text("keep")
+    code, _, err = run_cli(capsys, "prove", "--out", str(f), "-q")
+    assert_one_line_error(code, err, "not a directory")
+    assert (f / "paper").read_text() == "keep"
+
+
+@pytest.mark.slow
+def test_prove_whole_model_through_the_cli(capsys, tmp_path):
+    code, _, _ = run_cli(
+        capsys, "prove", "--timeout", "4", "--out", str(tmp_path / "p"), "--traces", str(tmp_path / "t"), "-q"
+    )
+    assert code in (1, 3)
+    data = json.loads((tmp_path / "p" / "paper" / "results.json").read_text())
+    assert len(data["obligations"]) == 20
+    for row in data["obligations"]:
+        assert (tmp_path / "p" / "paper" / row["lemma"] / f"{row['form']}-{row['rule']}.smt2").exists()
+        if row["verdict"] == "VIOLATED":
+            assert row["trace"]
+    code, _, _ = run_cli(capsys, "replay", *map(str, (tmp_path / "t").glob("*.json")))
+    assert code == 0

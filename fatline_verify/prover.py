@@ -1,0 +1,210 @@
+"""``fatline prove``: the collision and connectivity lemmas over the reals, per rule, with z3.
+
+For every lemma form and every rule that moves r, an obligation asks for a configuration where the
+rule breaks the lemma (:mod:`fatline_verify.smt.obligations`). Answers become verdicts only this way:
+
+- ``unsat`` with enough slot robots for the witness argument: PROVED for swarms of every size;
+  with fewer: HOLDS_WITHIN_BOUNDS for configurations of at most k + 1 robots.
+- ``sat``: the model is turned into exact rationals (irrational values rounded and re-checked) and
+  replayed by the executable model. Only if the replay shows the violation is it a counterexample:
+  VIOLATED when the configuration is an initial one (so the violation is reachable in one round),
+  INCONCLUSIVE otherwise (a violating configuration whose reachability is not decided). A replay that
+  disagrees is an encoding disagreement: a bug of the tool, reported as such.
+- ``unknown`` (timeout): INCONCLUSIVE with the solver's reason.
+"""
+
+from __future__ import annotations
+
+import json
+import multiprocessing
+import os
+from collections.abc import Callable
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+from fractions import Fraction
+from pathlib import Path
+from typing import Any
+
+from .algorithm import Rule
+from .config import Model
+from .options import Uncovered
+from .properties import Verdict
+from .schedule import Collision, decide_all, play_round
+from .simulate import Outcome, Run, outcome_after
+from .smt import obligations as ob
+from .smt.symbolic import MOVING
+from .swarm import initial_problems
+from .trace import check_replay, lost_edges, run_to_json
+
+
+@dataclass(frozen=True, slots=True)
+class ProofResult:
+    """One obligation's verdict."""
+
+    lemma: str
+    form: str
+    rule: str
+    verdict: Verdict
+    slots: int
+    any_size: bool
+    seconds: float
+    reason: str
+    smt2: str
+    witness: dict[str, Any] | None = field(default=None, repr=False, compare=False)
+    comment: str = field(default="", repr=False, compare=False)
+
+
+def rules_for(model: Model) -> list[Rule]:
+    """The moving rules this model's readings can fire."""
+    rules = [r for r in MOVING if r is not Rule.UNCOVERED_SEARCH or model.options.uncovered is Uncovered.SEARCH_BOTH]
+    return rules
+
+
+def replay_answer(
+    model: Model, lemma: str, form: str, rule: Rule, points: tuple[tuple[Fraction, Fraction], ...]
+) -> tuple[dict[str, Any], bool] | str:
+    """Replay a sat model; return (trace, is_initial) or the reason it does not reproduce."""
+    state = ((0, 0), *(model.to_lattice(p) for p in points))
+    active = [0] if form == "one-mover" else [0, 1]
+    decisions = decide_all(state, model)
+    if decisions[0].rule is not rule or not decisions[0].moves:
+        return f"r fires {decisions[0].rule.value}, not {rule.value}"
+    if form == "two-movers" and not decisions[1].moves:
+        return "the second robot does not move"
+    result = play_round(state, active, model, decisions)
+    if lemma == "no-collision":
+        if not any(isinstance(v, Collision) and v.robots == (0, 1) for v in result.violations):
+            return "r and robot 1 do not collide in the replayed round"
+        focus = "no-collision"
+    else:
+        if not any(pair == (0, 1) for pair, _ in lost_edges(result, model)):
+            return "r and robot 1 keep their edge in the replayed round"
+        focus = "connectivity" if any(v.lemma == "connectivity" for v in result.violations) else "connectivity-edge"
+    run = Run(model, state, (result,), outcome_after(result.after, result, model) or Outcome.ROUND_LIMIT)
+    origin = {"tool": "fatline prove", "lemma": lemma, "form": form, "rule": rule.value}
+    doc = json.loads(json.dumps(run_to_json(run, origin, focus=focus)))
+    check_replay(doc, model)
+    return doc, not initial_problems(state, model)
+
+
+def prove_one(
+    model: Model, lemma: str, form: str, rule: Rule, *, slots: int, timeout: float, out: Path | None
+) -> ProofResult:
+    """Decide one obligation (see the module docstring for the verdict rules).
+
+    The artefact written is always the full obligation with ``slots`` slot robots, whatever answered
+    first, so the ``.smt2`` files depend only on the model and ``slots``.
+    """
+    try:
+        full = ob.build(model, lemma, form, rule, slots)
+    except ob.NotEncoded as exc:
+        return ProofResult(lemma, form, rule.value, Verdict.INCONCLUSIVE, slots, False, 0.0, str(exc), "")
+    path = ""
+    if out is not None:
+        target = out / lemma / f"{full.name}.smt2"
+        ob.write(full, target)
+        path = str(target)
+    spent = 0.0
+
+    def result(verdict: Verdict, k: int, reason: str, doc: dict[str, Any] | None = None) -> ProofResult:
+        return ProofResult(lemma, form, rule.value, verdict, k, full.any_size, spent, reason, path, doc, full.comment)
+
+    for k in range(1, slots + 1):  # a counterexample from an initial configuration, smallest first
+        ans = ob.solve(ob.build(model, lemma, form, rule, k, initial=True), timeout / (2 * slots))
+        spent += ans.seconds
+        if ans.status == "sat":
+            got = replay_answer(model, lemma, form, rule, ans.positions)
+            if isinstance(got, str):
+                return result(Verdict.INCONCLUSIVE, k, f"encoding disagreement: {got}")
+            doc, initial = got
+            if initial:
+                return result(Verdict.VIOLATED, k, _found(doc, k, ans.rounded), doc)
+    ans = ob.solve(full, timeout)
+    spent += ans.seconds
+    if ans.status == "unsat":
+        if full.any_size:
+            return result(Verdict.PROVED, slots, "unsat: holds for swarms of every size")
+        return result(Verdict.HOLDS_WITHIN_BOUNDS, slots, f"unsat for configurations of at most {slots + 1} robots")
+    if ans.status == "unknown":
+        return result(Verdict.INCONCLUSIVE, slots, f"solver: {ans.reason}")
+    got = replay_answer(model, lemma, form, rule, ans.positions)
+    if isinstance(got, str):
+        return result(Verdict.INCONCLUSIVE, slots, f"encoding disagreement: {got}")
+    doc, initial = got
+    if initial:
+        return result(Verdict.VIOLATED, slots, _found(doc, len(ans.positions), ans.rounded), doc)
+    return result(
+        Verdict.INCONCLUSIVE,
+        slots,
+        "violating configuration found, not an initial one; whether it is reachable is not decided",
+        doc,
+    )
+
+
+def _found(doc: dict[str, Any], k: int, rounded: bool) -> str:
+    prop = doc["violation"]["property"]
+    what = {
+        "no-collision": "collision",
+        "connectivity": "an edge is lost and the visibility graph splits (Lemma 1)",
+        "connectivity-edge": "an edge is lost, the visibility graph stays connected (the proof's claim fails)",
+    }[prop]
+    note = "; values rounded from algebraic numbers and re-checked" if rounded else ""
+    return f"{what}, from an initial configuration of {k + 1} robots{note}"
+
+
+def prove(
+    model: Model,
+    lemmas: tuple[str, ...] = ob.LEMMAS,
+    *,
+    slots: int = 3,
+    timeout: float = 10.0,
+    out: Path | None = None,
+    jobs: int | None = None,
+    progress: Callable[[str], None] | None = None,
+) -> list[ProofResult]:
+    """Every obligation of ``lemmas`` for ``model``; ``.smt2`` files under ``out`` if given.
+
+    Each obligation runs in a fresh process: z3's answers (and times) depend on the terms a process
+    created before, so isolation makes every obligation's answer independent of the others and of
+    the order; it also spreads the obligations over the cores.
+    """
+    tasks = [(lemma, form, rule) for lemma in lemmas for form in ob.FORMS for rule in rules_for(model)]
+    ctx = multiprocessing.get_context("spawn")
+    workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
+    with ProcessPoolExecutor(workers, mp_context=ctx, max_tasks_per_child=1) as pool:
+        futures = [
+            pool.submit(prove_one, model, lemma, form, rule, slots=slots, timeout=timeout, out=out)
+            for lemma, form, rule in tasks
+        ]
+        results = []
+        for (lemma, form, rule), fut in zip(tasks, futures, strict=True):
+            results.append(fut.result())
+            if progress:
+                progress(f"{lemma} {form} {rule.value}")
+    return results
+
+
+def results_json(model: Model, results: list[ProofResult], traces: dict[str, str]) -> dict[str, Any]:
+    """``proofs/<model>/results.json``."""
+    return {
+        "model": model.name,
+        "solver": ob.solver_version(),
+        "obligations": [
+            {
+                "lemma": r.lemma,
+                "form": r.form,
+                "rule": r.rule,
+                "verdict": r.verdict.value,
+                "slots": r.slots,
+                "any_size": r.any_size,
+                "seconds": round(r.seconds, 2),
+                "reason": r.reason,
+                "smt2": r.smt2,
+                "trace": traces.get(f"{r.lemma}/{r.form}-{r.rule}"),
+            }
+            for r in results
+        ],
+    }
+
+
+__all__ = ["ProofResult", "prove", "prove_one", "results_json", "rules_for"]

@@ -1,0 +1,1 @@
+"""The only place that imports z3: symbolic rules, obligations, SMT-LIB2 output, model decoding."""
