@@ -110,7 +110,7 @@ def prove_one(
         return ProofResult(lemma, form, rule.value, verdict, k, full.any_size, spent, reason, path, doc, full.comment)
 
     for k in range(1, slots + 1):  # a counterexample from an initial configuration, smallest first
-        ans = ob.solve(ob.build(model, lemma, form, rule, k, initial=True), timeout / (2 * slots))
+        ans = ob.solve(ob.build(model, lemma, form, rule, k, initial=True), timeout / slots)
         spent += ans.seconds
         if ans.status == "sat":
             got = replay_answer(model, lemma, form, rule, ans.positions)
@@ -141,6 +141,54 @@ def prove_one(
     )
 
 
+def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) -> ProofResult:
+    """Lemma 1, global form, for configurations of at most ``slots + 1`` robots."""
+    full = ob.build_global(model, slots)
+    path = ""
+    if out is not None:
+        target = out / "connectivity" / "global.smt2"
+        ob.write(full, target)
+        path = str(target)
+    spent = 0.0
+
+    def result(verdict: Verdict, k: int, reason: str, doc: dict[str, Any] | None = None) -> ProofResult:
+        return ProofResult("connectivity", "global", "any", verdict, k, False, spent, reason, path, doc, full.comment)
+
+    attempts = [(k, True, timeout / slots) for k in range(1, slots + 1)] + [(slots, False, timeout)]
+    last = None
+    for k, initial, limit in attempts:
+        obligation = ob.build_global(model, k, initial=initial)
+        ans = ob.solve(obligation, limit)
+        spent += ans.seconds
+        last = (k, ans)
+        if ans.status != "sat":
+            continue
+        active_flags, present = ans.flags[: k + 1], ans.flags[k + 1 :]
+        state = ((0, 0), *(model.to_lattice(p) for p in ans.positions))
+        index = [0] + [1 + sum(present[:i]) for i in range(k)]  # state index of r and of each slot
+        active = [index[i] for i in range(k + 1) if active_flags[i] and (i == 0 or present[i - 1])]
+        run_result = play_round(state, active, model)
+        if not any(v.lemma == "connectivity" for v in run_result.violations):
+            return result(
+                Verdict.INCONCLUSIVE, k, "encoding disagreement: the replayed round keeps the graph connected"
+            )
+        run = Run(model, state, (run_result,), Outcome.VIOLATION)
+        origin = {"tool": "fatline prove", "lemma": "connectivity", "form": "global"}
+        doc = json.loads(json.dumps(run_to_json(run, origin, focus="connectivity")))
+        check_replay(doc, model)
+        if not initial_problems(state, model):
+            return result(
+                Verdict.VIOLATED, k, f"the graph splits, from an initial configuration of {k + 1} robots", doc
+            )
+        if not initial:
+            return result(Verdict.INCONCLUSIVE, k, "disconnecting configuration found, not an initial one", doc)
+    assert last is not None
+    k, ans = last
+    if ans.status == "unsat":
+        return result(Verdict.HOLDS_WITHIN_BOUNDS, k, f"unsat for configurations of at most {k + 1} robots")
+    return result(Verdict.INCONCLUSIVE, k, f"solver: {ans.reason}")
+
+
 def _found(doc: dict[str, Any], k: int, rounded: bool) -> str:
     prop = doc["violation"]["property"]
     what = {
@@ -168,19 +216,25 @@ def prove(
     created before, so isolation makes every obligation's answer independent of the others and of
     the order; it also spreads the obligations over the cores.
     """
-    tasks = [(lemma, form, rule) for lemma in lemmas for form in ob.FORMS for rule in rules_for(model)]
+    tasks: list[tuple[str, str, Rule | None]] = [
+        (lemma, form, rule) for lemma in lemmas for form in ob.FORMS for rule in rules_for(model)
+    ]
+    if "connectivity" in lemmas:
+        tasks.append(("connectivity", "global", None))
     ctx = multiprocessing.get_context("spawn")
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
     with ProcessPoolExecutor(workers, mp_context=ctx, max_tasks_per_child=1) as pool:
         futures = [
             pool.submit(prove_one, model, lemma, form, rule, slots=slots, timeout=timeout, out=out)
+            if rule is not None
+            else pool.submit(prove_global, model, slots=slots, timeout=timeout, out=out)
             for lemma, form, rule in tasks
         ]
         results = []
         for (lemma, form, rule), fut in zip(tasks, futures, strict=True):
             results.append(fut.result())
             if progress:
-                progress(f"{lemma} {form} {rule.value}")
+                progress(f"{lemma} {form} {rule.value if rule else ''}")
     return results
 
 

@@ -12,7 +12,8 @@ from hypothesis import strategies as st
 from fatline_verify.algorithm import Rule, decide
 from fatline_verify.properties import Verdict
 from fatline_verify.prover import prove_one
-from fatline_verify.smt.obligations import build, evaluate, smt2, solve
+from fatline_verify.prover import prove_global
+from fatline_verify.smt.obligations import build, evaluate, recheck_file, smt2, solve
 from fatline_verify.trace import check_replay
 from tests.conftest import make_model
 from tests.test_properties import readings
@@ -52,11 +53,7 @@ def test_unsat_obligation_stays_unsat_from_its_file(tmp_path):
     assert solve(ob, 10).status == "unsat"
     path = tmp_path / "ob.smt2"
     path.write_text(smt2(ob))
-    import z3
-
-    solver = z3.Solver()
-    solver.add(z3.parse_smt2_file(str(path)))
-    assert solver.check() == z3.unsat
+    assert recheck_file(path) == "unsat"
 
 
 def test_second_solver_agrees_on_the_written_files(tmp_path):
@@ -116,3 +113,28 @@ def test_scenario_1_unsat_is_a_proof_for_every_size_when_it_holds(tmp_path):
     assert result.verdict is Verdict.VIOLATED
     check_replay(json.loads(json.dumps(result.witness)), model)
     assert (tmp_path / "connectivity" / "one-mover-scenario-1.smt2").read_text().startswith("; Obligation:")
+
+
+def test_seeded_unsafe_reading_is_refuted_with_a_replayed_trace():
+    # Seeded: under contact=strict, touching is a collision, and scenario4_drop=touch stops r exactly
+    # touching the top robot of I. The prover must find that, from an initial configuration.
+    model = make_model(contact="strict", scenario4_drop="touch")
+    result = prove_one(model, "no-collision", "one-mover", Rule.SCENARIO_4_I_NONEMPTY, slots=2, timeout=10, out=None)
+    assert result.verdict is Verdict.VIOLATED
+    doc = json.loads(json.dumps(result.witness))
+    check_replay(doc, model)
+    assert Fr(doc["violation"]["closest_distance2"]) <= 4
+
+
+def test_global_connectivity_form_matches_the_checker_on_two_robots(tmp_path):
+    # The lattice checker finds 2-robot disconnections under the default readings and none under the
+    # literal ones; the global obligation over the reals agrees.
+    from fatline_verify.config import load_model
+
+    broken = prove_global(load_model("paper"), slots=1, timeout=10, out=tmp_path)
+    assert broken.verdict is Verdict.VIOLATED
+    check_replay(json.loads(json.dumps(broken.witness)), load_model("paper"))
+    assert broken.witness["violation"]["property"] == "connectivity"
+    kept = prove_global(load_model("paper-literal"), slots=1, timeout=10, out=None)
+    assert kept.verdict is Verdict.HOLDS_WITHIN_BOUNDS
+    assert recheck_file(tmp_path / "connectivity" / "global.smt2") == "sat"
