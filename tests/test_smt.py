@@ -11,8 +11,7 @@ from hypothesis import strategies as st
 
 from fatline_verify.algorithm import Rule, decide
 from fatline_verify.properties import Verdict
-from fatline_verify.prover import prove_one
-from fatline_verify.prover import prove_global
+from fatline_verify.prover import prove_global, prove_one
 from fatline_verify.smt.obligations import build, evaluate, recheck_file, smt2, solve
 from fatline_verify.trace import check_replay
 from tests.conftest import make_model
