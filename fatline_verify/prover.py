@@ -221,9 +221,8 @@ def prove(
     ]
     if "connectivity" in lemmas:
         tasks.append(("connectivity", "global", None))
-    ctx = multiprocessing.get_context("spawn")
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
-    with ProcessPoolExecutor(workers, mp_context=ctx, max_tasks_per_child=1) as pool:
+    with _fresh_processes(workers) as pool:
         futures = [
             pool.submit(prove_one, model, lemma, form, rule, slots=slots, timeout=timeout, out=out)
             if rule is not None
@@ -236,6 +235,17 @@ def prove(
             if progress:
                 progress(f"{lemma} {form} {rule.value if rule else ''}")
     return results
+
+
+def _fresh_processes(workers: int) -> ProcessPoolExecutor:
+    """A pool whose every task runs in a new interpreter (z3's answers depend on a process's history)."""
+    return ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"), max_tasks_per_child=1)
+
+
+def isolated(fn: Callable[..., ProofResult], *args: Any, **kwargs: Any) -> ProofResult:
+    """Run :func:`prove_one` or :func:`prove_global` in a fresh process, as ``fatline prove`` does."""
+    with _fresh_processes(1) as pool:
+        return pool.submit(fn, *args, **kwargs).result()
 
 
 def results_json(model: Model, results: list[ProofResult], traces: dict[str, str]) -> dict[str, Any]:

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from fatline_verify.algorithm import Rule, decide
 from fatline_verify.properties import Verdict
-from fatline_verify.prover import prove_global, prove_one
+from fatline_verify.prover import isolated, prove_global, prove_one
 from fatline_verify.smt.obligations import build, evaluate, recheck_file, smt2, solve
 from fatline_verify.trace import check_replay
 from tests.conftest import make_model
@@ -84,7 +84,9 @@ def test_second_solver_agrees_on_the_written_files(tmp_path):
 def test_the_paper_s_scenario_4_drop_collides_and_the_witness_replays():
     # "y_p = 0 - d + 1": r stops one radius above the top robot of I. A seeded defect of the paper itself.
     model = make_model()
-    result = prove_one(model, "no-collision", "one-mover", Rule.SCENARIO_4_I_NONEMPTY, slots=1, timeout=10, out=None)
+    result = isolated(
+        prove_one, model, "no-collision", "one-mover", Rule.SCENARIO_4_I_NONEMPTY, slots=1, timeout=10, out=None
+    )
     assert result.verdict is Verdict.VIOLATED
     doc = json.loads(json.dumps(result.witness))
     check_replay(doc, model)
@@ -95,7 +97,7 @@ def test_the_paper_s_scenario_4_drop_collides_and_the_witness_replays():
 
 def test_unsat_with_too_few_slots_is_only_bounded():
     model = make_model()
-    result = prove_one(model, "no-collision", "two-movers", Rule.SCENARIO_2, slots=1, timeout=10, out=None)
+    result = isolated(prove_one, model, "no-collision", "two-movers", Rule.SCENARIO_2, slots=1, timeout=10, out=None)
     assert result.verdict is Verdict.HOLDS_WITHIN_BOUNDS
     assert not result.any_size
     assert "at most 2 robots" in result.reason
@@ -106,7 +108,7 @@ def test_scenario_1_unsat_is_a_proof_for_every_size_when_it_holds(tmp_path):
     # Under the default readings the edge form of connectivity fails (r can lose a robot it saw), and the
     # obligation says why unsat would have been enough.
     model = make_model()
-    result = prove_one(model, "connectivity", "one-mover", Rule.SCENARIO_1, slots=2, timeout=10, out=tmp_path)
+    result = isolated(prove_one, model, "connectivity", "one-mover", Rule.SCENARIO_1, slots=2, timeout=10, out=tmp_path)
     assert result.any_size
     assert "unsat proves the claim for swarms of every size" in result.comment
     assert result.verdict is Verdict.VIOLATED
@@ -118,7 +120,9 @@ def test_seeded_unsafe_reading_is_refuted_with_a_replayed_trace():
     # Seeded: under contact=strict, touching is a collision, and scenario4_drop=touch stops r exactly
     # touching the top robot of I. The prover must find that, from an initial configuration.
     model = make_model(contact="strict", scenario4_drop="touch")
-    result = prove_one(model, "no-collision", "one-mover", Rule.SCENARIO_4_I_NONEMPTY, slots=2, timeout=10, out=None)
+    result = isolated(
+        prove_one, model, "no-collision", "one-mover", Rule.SCENARIO_4_I_NONEMPTY, slots=2, timeout=10, out=None
+    )
     assert result.verdict is Verdict.VIOLATED
     doc = json.loads(json.dumps(result.witness))
     check_replay(doc, model)
@@ -130,10 +134,10 @@ def test_global_connectivity_form_matches_the_checker_on_two_robots(tmp_path):
     # literal ones; the global obligation over the reals agrees.
     from fatline_verify.config import load_model
 
-    broken = prove_global(load_model("paper"), slots=1, timeout=10, out=tmp_path)
+    broken = isolated(prove_global, load_model("paper"), slots=1, timeout=10, out=tmp_path)
     assert broken.verdict is Verdict.VIOLATED
     check_replay(json.loads(json.dumps(broken.witness)), load_model("paper"))
     assert broken.witness["violation"]["property"] == "connectivity"
-    kept = prove_global(load_model("paper-literal"), slots=1, timeout=10, out=None)
+    kept = isolated(prove_global, load_model("paper-literal"), slots=1, timeout=10, out=None)
     assert kept.verdict is Verdict.HOLDS_WITHIN_BOUNDS
     assert recheck_file(tmp_path / "connectivity" / "global.smt2") == "sat"
