@@ -233,4 +233,41 @@ def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
     return _bounded(ex, Lemma.APPROACH, liveness=True)
 
 
+def check_to_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dict[str, Any]:
+    """The check result as plain data (``--json``, the report's cache)."""
+    from .config import model_to_mapping
+
+    return {
+        "model": model_to_mapping(result.model),
+        "window": list(result.window),
+        "max_states": result.max_states,
+        "after_violation": result.after_violation,
+        "searches": [
+            {
+                "robots": s.robots,
+                "initial": s.initial,
+                "states": s.states,
+                "transitions": s.transitions,
+                "escaped": s.escaped,
+                "violating_only": s.violating_only,
+                "truncated": s.truncated,
+                "seconds": round(s.seconds, 3),
+                "engine": s.engine,
+            }
+            for s in result.stats
+        ],
+        "lemmas": [
+            {
+                "lemma": r.lemma.value,
+                "robots": r.robots,
+                "verdict": r.verdict.value,
+                "reason": r.reason,
+                "witness_rounds": r.witness_rounds,
+                "trace": paths.get((r.lemma.value, r.robots)),
+            }
+            for r in result.results
+        ],
+    }
+
+
 __all__ = ["CheckResult", "SearchStats", "check", "check_robots", "lemma_verdicts", "replay"]

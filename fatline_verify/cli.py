@@ -11,7 +11,6 @@ import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from . import __version__
 from .config import Model, load_model, parse_robots, parse_window, shipped_models
@@ -22,9 +21,6 @@ from .simulate import Outcome, simulate
 from .swarm import State
 from .text import check_lines, explain_lines, prove_lines, trace_lines
 from .trace import check_replay, load_trace, run_to_json, write_trace
-
-if TYPE_CHECKING:
-    from .checker import CheckResult
 
 EXIT_OK, EXIT_FOUND, EXIT_BAD, EXIT_INCONCLUSIVE = 0, 1, 2, 3
 
@@ -114,11 +110,21 @@ def cmd_replay(args: argparse.Namespace) -> int:
         print(f"{name}: reproduces: {len(run.rounds)} rounds, {what}")
         if args.verbose:
             _print(["  " + line for line in trace_lines(doc)])
+        if args.picture:
+            from .report.pictures import frames
+
+            target = Path(args.picture)
+            if target.exists() and not target.is_dir():
+                raise InvalidInput(f"picture={args.picture!r}: exists and is not a directory; expected a directory")
+            target.mkdir(parents=True, exist_ok=True)
+            for k, svg in enumerate(frames(run, doc)):
+                (target / f"{Path(name).stem}-{k}.svg").write_text(svg, encoding="utf-8")
+            print(f"  pictures written to {target}")
     return worst
 
 
 def cmd_check(args: argparse.Namespace) -> int:
-    from .checker import check
+    from .checker import check, check_to_json
 
     model = load_model(args.model)
     robots = parse_robots(args.robots, error=InvalidInput) if args.robots else None
@@ -150,7 +156,7 @@ def cmd_check(args: argparse.Namespace) -> int:
             paths[(r.lemma.value, r.robots)] = str(path)
     _print(check_lines(result, paths))
     if args.json:
-        _write_json(Path(args.json), check_json(result, paths))
+        _write_json(Path(args.json), check_to_json(result, paths))
         print(f"results written to {args.json}")
     if result.any_violated:
         return EXIT_FOUND
@@ -188,8 +194,13 @@ def cmd_prove(args: argparse.Namespace) -> int:
         if r.witness is not None:
             path = traces_dir / f"{model.name}-prove-{r.lemma}-{r.form}-{r.rule}.json"
             write_trace(r.witness, path)
-            traces[f"{r.lemma}/{r.form}-{r.rule}"] = str(path)
-    data = results_json(model, results, traces)
+            traces[f"{r.lemma}/{r.form}-{r.rule}"] = path.as_posix()
+    from .cache import fingerprint
+
+    data = {
+        "fingerprint": fingerprint(model, "prove", slots=args.slots, timeout=args.timeout),
+        **results_json(model, results, traces),
+    }
     _write_json(out / "results.json", data)
     _print(prove_lines(model, results, traces, out))
     if args.json:
@@ -199,6 +210,37 @@ def cmd_prove(args: argparse.Namespace) -> int:
     return EXIT_INCONCLUSIVE if any(r.verdict.value == "INCONCLUSIVE" for r in results) else EXIT_OK
 
 
+def cmd_report(args: argparse.Namespace) -> int:
+    from .report.build import build_report
+
+    specs = args.models or [p.stem for p in shipped_models()]
+    models = [load_model(s) for s in specs]
+    names = [m.name for m in models]
+    if len(set(names)) != len(names):
+        raise InvalidInput(f"models={specs}: two models share a name; expected distinct model names")
+    out = Path(args.out)
+    if out.exists() and not out.is_dir():
+        raise InvalidInput(f"out={args.out!r}: exists and is not a directory; expected a directory for the reports")
+
+    def tick(label: str) -> None:
+        if not args.quiet:
+            print(label, file=sys.stderr, flush=True)
+
+    reports = build_report(
+        models,
+        out,
+        proofs=Path(args.proofs),
+        slots=args.slots,
+        timeout=args.timeout,
+        refresh=args.refresh,
+        progress=tick,
+    )
+    for r in reports:
+        print(f"{out / r.model.name / 'README.md'}: {len(r.traces)} counterexample traces")
+    print(f"{out / 'index.html'} and {out / 'README.md'}: the readings x lemmas matrix")
+    return EXIT_OK
+
+
 def _with_q(model: Model, q: int) -> Model:
     from dataclasses import replace
 
@@ -206,43 +248,6 @@ def _with_q(model: Model, q: int) -> Model:
 
     p = model.parameters
     return replace(model, parameters=Parameters(rad_v=p.rad_v, q=q, delta=p.delta))
-
-
-def check_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dict[str, object]:
-    """The check result as plain data (for ``--json``)."""
-    from .config import model_to_mapping
-
-    return {
-        "model": model_to_mapping(result.model),
-        "window": list(result.window),
-        "max_states": result.max_states,
-        "after_violation": result.after_violation,
-        "searches": [
-            {
-                "robots": s.robots,
-                "initial": s.initial,
-                "states": s.states,
-                "transitions": s.transitions,
-                "escaped": s.escaped,
-                "violating_only": s.violating_only,
-                "truncated": s.truncated,
-                "seconds": round(s.seconds, 3),
-                "engine": s.engine,
-            }
-            for s in result.stats
-        ],
-        "lemmas": [
-            {
-                "lemma": r.lemma.value,
-                "robots": r.robots,
-                "verdict": r.verdict.value,
-                "reason": r.reason,
-                "witness_rounds": r.witness_rounds,
-                "trace": paths.get((r.lemma.value, r.robots)),
-            }
-            for r in result.results
-        ],
-    }
 
 
 def _write_json(path: Path, data: object) -> None:
@@ -347,7 +352,18 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("traces", nargs="+", metavar="TRACE")
     p.add_argument("--model", help="replay under this model instead of the trace's own")
     p.add_argument("-v", "--verbose", action="store_true", help="print every round")
+    p.add_argument("--picture", metavar="DIR", help="write one SVG picture per round of each trace into DIR")
     p.set_defaults(handler=cmd_replay)
+
+    p = add("report", "write per-model reports with pictures, the regression corpus and the readings x lemmas matrix")
+    p.add_argument("models", nargs="*", metavar="MODEL", help="model files or names (default: every shipped model)")
+    p.add_argument("--out", default="reports", help="report directory (default: reports)")
+    p.add_argument("--proofs", default="proofs", help="prover artefacts directory (default: proofs)")
+    p.add_argument("--slots", type=int, default=3, help="prover slot robots (default 3)")
+    p.add_argument("--timeout", type=float, default=10.0, help="prover budget per obligation in seconds (default 10)")
+    p.add_argument("--refresh", action="store_true", help="recompute results even when the cached ones are up to date")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
+    p.set_defaults(handler=cmd_report)
     return parser
 
 

@@ -1,0 +1,1 @@
+"""Reports: pictures of counterexamples, per-model pages, the cross-model matrix."""

@@ -1,0 +1,70 @@
+"""The report as a person uses it: open reports/index.html in headless Chromium, step through a
+counterexample with the viewer's buttons, check the counter and the picture change, save a screenshot.
+
+Needs Debian's ``chromium`` and ``chromium-driver`` (``.ci/run`` installs them). Skipped where they
+are missing, except under CI, where their absence is a failure.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+CHROMIUM = shutil.which("chromium")
+DRIVER = shutil.which("chromedriver")
+
+
+@pytest.fixture
+def browser(tmp_path):
+    if not (CHROMIUM and DRIVER):
+        if os.environ.get("CI"):
+            pytest.fail("chromium and chromedriver are required under CI (.ci/run installs them)")
+        pytest.skip("chromium / chromedriver not installed")
+    webdriver = pytest.importorskip("selenium.webdriver")
+    from selenium.webdriver.chrome.service import Service
+
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    for flag in (
+        "--headless",
+        "--no-sandbox",
+        "--disable-gpu",
+        "--disable-quic",
+        "--no-first-run",
+        "--disable-background-networking",
+        "--disable-component-update",
+        "--disable-sync",
+        f"--user-data-dir={tmp_path / 'profile'}",
+        "--window-size=1200,1400",
+    ):
+        options.add_argument(flag)
+    driver = webdriver.Chrome(service=Service(DRIVER), options=options)
+    try:
+        yield driver
+    finally:
+        driver.quit()
+
+
+def test_step_through_a_counterexample(browser, tmp_path):
+    from selenium.webdriver.common.by import By
+
+    browser.get((ROOT / "reports" / "index.html").as_uri())
+    viewer = browser.find_elements(By.CSS_SELECTOR, ".viewer")[0]
+    counter = viewer.find_element(By.CSS_SELECTOR, ".counter")
+    img = viewer.find_element(By.TAG_NAME, "img")
+    first_src, first_count = img.get_attribute("src"), counter.text
+    assert first_count.startswith("frame 1 / ")
+    assert browser.execute_script("return arguments[0].complete && arguments[0].naturalWidth > 0", img)
+    viewer.find_element(By.CSS_SELECTOR, ".next").click()
+    assert counter.text.startswith("frame 2 / ")
+    assert img.get_attribute("src") != first_src
+    assert browser.execute_script("return arguments[0].complete && arguments[0].naturalWidth > 0", img)
+    viewer.find_element(By.CSS_SELECTOR, ".prev").click()
+    assert counter.text == first_count and img.get_attribute("src") == first_src
+    shot = tmp_path / "report.png"
+    browser.save_screenshot(str(shot))
+    assert shot.stat().st_size > 10_000
