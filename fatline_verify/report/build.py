@@ -21,7 +21,7 @@ from ..checker import check, check_to_json
 from ..config import Model
 from ..prover import prove, results_json
 from ..trace import check_replay, load_trace, write_trace
-from .pages import cross_model_html, cross_model_markdown, model_html, model_markdown
+from .pages import ASSETS, cross_model_html, cross_model_markdown, model_html, model_markdown
 from .pictures import frames
 
 
@@ -112,6 +112,8 @@ def build_report(
         (out / model.name / "README.md").write_text(model_markdown(report), encoding="utf-8")
         (out / model.name / "index.html").write_text(model_html(report), encoding="utf-8")
         reports.append(report)
+    for name, text in ASSETS.items():
+        (out / name).write_text(text, encoding="utf-8")
     (out / "README.md").write_text(cross_model_markdown(reports), encoding="utf-8")
     (out / "index.html").write_text(cross_model_html(reports), encoding="utf-8")
     return reports

@@ -51,9 +51,13 @@ code { background: #f5f5f5; padding: 0 0.2em; }
 """
 
 
-def _worst(rows: list[dict[str, Any]], lemma: str) -> str | None:
-    mine = [r["verdict"] for r in rows if r["lemma"] == lemma]
-    return min(mine, key=RANK.__getitem__) if mine else None
+def _worst(rows: list[dict[str, Any]], lemma: str) -> str:
+    """The worst verdict over robot counts, with the smallest robot count that has it."""
+    mine = [(RANK[r["verdict"]], r["robots"], r["verdict"]) for r in rows if r["lemma"] == lemma]
+    if not mine:
+        return ""
+    _, robots, verdict = min(mine)
+    return f"{verdict} ({robots} robots)" if verdict == "VIOLATED" else verdict
 
 
 def _prover_summary(rows: list[dict[str, Any]], lemma: str) -> str:
@@ -207,10 +211,15 @@ def viewer(t: dict[str, Any], prefix: str = "") -> str:
     )
 
 
-def _page(title: str, body: str) -> str:
+ASSETS = {"viewer.js": VIEWER_JS.lstrip(), "style.css": CSS.lstrip()}
+"""Written once at the report root; every page links them (relative paths work from the file system)."""
+
+
+def _page(title: str, body: str, root: str) -> str:
     return (
         f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>'
-        f"<style>{CSS}</style></head><body>\n{body}\n<script>{VIEWER_JS}</script></body></html>\n"
+        f'<link rel="stylesheet" href="{root}style.css"></head><body>\n{body}\n'
+        f'<script src="{root}viewer.js"></script></body></html>\n'
     )
 
 
@@ -229,7 +238,7 @@ def model_html(report: ModelReport) -> str:
         "<h2>Counterexamples</h2>",
     ]
     parts += [viewer(t) for t in report.traces]
-    return _page(f"fatline-verify: {m.name}", "\n".join(parts))
+    return _page(f"fatline-verify: {m.name}", "\n".join(parts), "../")
 
 
 def _matrix(reports: list[ModelReport]) -> tuple[list[str], list[list[str]]]:
@@ -241,7 +250,7 @@ def _matrix(reports: list[ModelReport]) -> tuple[list[str], list[list[str]]]:
     rows = []
     for r in reports:
         row = [r.model.name, _readings(r)]
-        row += [_worst(r.check["lemmas"], lemma.value) or "" for lemma in Lemma]
+        row += [_worst(r.check["lemmas"], lemma.value) for lemma in Lemma]
         row += [_prover_summary(r.prove["obligations"], lemma) for lemma in PROVER_LEMMAS]
         rows.append(row)
     return headers, rows
@@ -249,7 +258,7 @@ def _matrix(reports: list[ModelReport]) -> tuple[list[str], list[list[str]]]:
 
 INTRO = (
     "Which reading of the paper breaks which lemma. *check*: the bounded model checker at each model's bounds "
-    "(worst verdict over the robot counts). *prove*: z3 obligations per rule over the reals, counted by verdict. "
+    "(worst verdict over the robot counts, with the smallest swarm that shows it). *prove*: z3 obligations per rule over the reals, counted by verdict. "
     "Every VIOLATED verdict has a counterexample trace in `traces/` that `fatline replay` reproduces."
 )
 
@@ -272,10 +281,10 @@ def cross_model_html(reports: list[ModelReport]) -> str:
             1,
         )
     for v in RANK:
-        table = table.replace(f"<td>{v}</td>", f'<td class="{v}">{v}</td>')
+        table = table.replace(f"<td>{v}", f'<td class="{v}">{v}')
     featured = [viewer(r.traces[0], prefix=f"{r.model.name}/") for r in reports if r.traces]
     intro = html.escape(INTRO.replace("*", "").replace("`", ""))
     body = f"<h1>fatline-verify reports</h1><p>{intro}</p>{table}<h2>A counterexample per model</h2>" + "\n".join(
         featured
     )
-    return _page("fatline-verify reports", body)
+    return _page("fatline-verify reports", body, "")

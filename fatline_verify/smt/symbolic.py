@@ -135,6 +135,13 @@ def classify(c: Slot, model: Model, visible: z3.BoolRef) -> dict[Band, z3.BoolRe
     return {k: z3.And(visible, v) for k, v in sets.items()}
 
 
+def _extremum(var: z3.ArithRef, members: list[z3.BoolRef], values: list[z3.ArithRef], least: bool) -> z3.BoolRef:
+    """``var`` is the least (or greatest) of ``values`` over the members, when there is a member."""
+    bound = [z3.Implies(m, var <= v if least else v <= var) for m, v in zip(members, values, strict=True)]
+    attained = [z3.And(m, var == v) for m, v in zip(members, values, strict=True)]
+    return z3.Implies(any_(members), z3.And(any_(attained), all_(bound)))
+
+
 def decide(slots: list[Slot], model: Model, tag: str) -> SymDecision:
     """``LineForm()`` for the robot at the origin seeing (some of) ``slots``."""
     opts = model.options
@@ -149,15 +156,7 @@ def decide(slots: list[Slot], model: Model, tag: str) -> SymDecision:
 
     right = [z3.Or(s[Band.B], s[Band.C], s[Band.D]) for s in sets]
     psi0 = z3.Real(f"psi0_{tag}")
-    side.append(
-        z3.Implies(
-            any_(right),
-            z3.And(
-                any_([z3.And(r, psi0 == c.x) for r, c in zip(right, slots, strict=True)]),
-                all_([z3.Implies(r, psi0 <= c.x) for r, c in zip(right, slots, strict=True)]),
-            ),
-        )
-    )
+    side.append(_extremum(psi0, right, [c.x for c in slots], least=True))
     psi = psi0 if opts.psi_right is PsiRight.CENTRE_LINE else psi0 - 1
     rpsi_disc = opts.r_psi is RPsi.DISC or (opts.r_psi is RPsi.FOLLOWS_BANDS and opts.bands is Bands.DISC)
     in_r = [z3.And(v, _strip(c.x - psi, rpsi_disc)) for c, v in zip(slots, visible, strict=True)]
@@ -187,15 +186,7 @@ def decide(slots: list[Slot], model: Model, tag: str) -> SymDecision:
     # Scenario 4
     below = [s[Band.I] for s in sets]
     top = z3.Real(f"top_{tag}")
-    side.append(
-        z3.Implies(
-            any_(below),
-            z3.And(
-                any_([z3.And(b, top == c.y) for b, c in zip(below, slots, strict=True)]),
-                all_([z3.Implies(b, c.y <= top) for b, c in zip(below, slots, strict=True)]),
-            ),
-        )
-    )
+    side.append(_extremum(top, below, [c.y for c in slots], least=False))
     d = -top
     drop = opts.scenario4_drop
     y_empty = -rad_v if drop is Scenario4Drop.PROOFS else -rad_v + 1
