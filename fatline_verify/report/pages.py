@@ -258,7 +258,8 @@ def _matrix(reports: list[ModelReport]) -> tuple[list[str], list[list[str]]]:
 
 INTRO = (
     "Which reading of the paper breaks which lemma. *check*: the bounded model checker at each model's bounds "
-    "(worst verdict over the robot counts, with the smallest swarm that shows it). *prove*: z3 obligations per rule over the reals, counted by verdict. "
+    "(worst verdict over the robot counts, with the smallest swarm that shows it). "
+    "*prove*: z3 obligations per rule over the reals, counted by verdict. "
     "Every VIOLATED verdict has a counterexample trace in `traces/` that `fatline replay` reproduces."
 )
 
