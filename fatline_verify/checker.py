@@ -29,6 +29,8 @@ from .simulate import Outcome
 from .trace import approach_stuck, replay
 
 MAX_LASSOS_TRIED = 20
+CHECKER_VERSION = 1
+"""Bumped whenever the checker's semantics change (part of the report cache's fingerprint)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -231,6 +233,13 @@ def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
         detail = f"{min(len(lassos), MAX_LASSOS_TRIED)} of {len(lassos)} fair cycles examined"
         return _result(ex, Lemma.APPROACH, Verdict.INCONCLUSIVE, StopReason.CYCLE_NOT_DECISIVE.describe(detail))
     return _bounded(ex, Lemma.APPROACH, liveness=True)
+
+
+def check_fingerprint(model: Model) -> str:
+    """What a check result at the model's own bounds depends on: the model and the checker's version."""
+    from .cache import fingerprint
+
+    return fingerprint(model, "check", engine=CHECKER_VERSION)
 
 
 def check_to_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dict[str, Any]:

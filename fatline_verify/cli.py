@@ -195,12 +195,9 @@ def cmd_prove(args: argparse.Namespace) -> int:
             path = traces_dir / f"{model.name}-prove-{r.lemma}-{r.form}-{r.rule}.json"
             write_trace(r.witness, path)
             traces[f"{r.lemma}/{r.form}-{r.rule}"] = path.as_posix()
-    from .cache import fingerprint
+    from .prover import prove_fingerprint
 
-    data = {
-        "fingerprint": fingerprint(model, "prove", slots=args.slots, timeout=args.timeout),
-        **results_json(model, results, traces),
-    }
+    data = {"fingerprint": prove_fingerprint(model, args.slots, args.timeout), **results_json(model, results, traces)}
     _write_json(out / "results.json", data)
     _print(prove_lines(model, results, traces, out))
     if args.json:

@@ -27,7 +27,7 @@ from typing import Any
 
 from .algorithm import Rule
 from .config import Model
-from .options import Uncovered
+from .options import Scheduler, Uncovered
 from .properties import Verdict
 from .schedule import Collision, decide_all, play_round
 from .simulate import Outcome, Run, outcome_after
@@ -167,6 +167,14 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
         state = ((0, 0), *(model.to_lattice(p) for p in ans.positions))
         index = [0] + [1 + sum(present[:i]) for i in range(k)]  # state index of r and of each slot
         active = [index[i] for i in range(k + 1) if active_flags[i] and (i == 0 or present[i - 1])]
+        legal = {
+            Scheduler.FSYNC: len(active) == len(state),
+            Scheduler.CENTRALIZED: len(active) == 1,
+        }.get(model.options.scheduler, bool(active))
+        if not legal:
+            return result(
+                Verdict.INCONCLUSIVE, k, f"encoding disagreement: activation set {active} breaks the scheduler"
+            )
         run_result = play_round(state, active, model)
         if not any(v.lemma == "connectivity" for v in run_result.violations):
             return result(
@@ -216,8 +224,9 @@ def prove(
     created before, so isolation makes every obligation's answer independent of the others and of
     the order; it also spreads the obligations over the cores.
     """
+    forms = ob.forms_for(model.options.scheduler)
     tasks: list[tuple[str, str, Rule | None]] = [
-        (lemma, form, rule) for lemma in lemmas for form in ob.FORMS for rule in rules_for(model)
+        (lemma, form, rule) for lemma in lemmas for form in forms for rule in rules_for(model)
     ]
     if "connectivity" in lemmas:
         tasks.append(("connectivity", "global", None))
@@ -246,6 +255,13 @@ def isolated(fn: Callable[..., ProofResult], *args: Any, **kwargs: Any) -> Proof
     """Run :func:`prove_one` or :func:`prove_global` in a fresh process, as ``fatline prove`` does."""
     with _fresh_processes(1) as pool:
         return pool.submit(fn, *args, **kwargs).result()
+
+
+def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
+    """What a prover result depends on: the model, the settings, the encoding's version."""
+    from .cache import fingerprint
+
+    return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ob.ENCODING_VERSION)
 
 
 def results_json(model: Model, results: list[ProofResult], traces: dict[str, str]) -> dict[str, Any]:

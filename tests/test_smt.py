@@ -141,3 +141,21 @@ def test_global_connectivity_form_matches_the_checker_on_two_robots(tmp_path):
     kept = isolated(prove_global, load_model("paper-literal"), slots=1, timeout=10, out=None)
     assert kept.verdict is Verdict.HOLDS_WITHIN_BOUNDS
     assert recheck_file(tmp_path / "connectivity" / "global.smt2") == "sat"
+
+
+def test_forms_follow_the_scheduler():
+    from fatline_verify.options import Scheduler
+    from fatline_verify.smt.obligations import forms_for
+
+    assert forms_for(Scheduler.SSYNC) == ("one-mover", "two-movers")
+    assert forms_for(Scheduler.CENTRALIZED) == ("one-mover",)
+    assert forms_for(Scheduler.FSYNC) == ()
+
+
+@pytest.mark.parametrize(("scheduler", "movers"), [("centralized", 1), ("fsync", 2)])
+def test_global_form_activates_what_the_scheduler_allows(scheduler, movers):
+    model = make_model(scheduler=scheduler)
+    result = isolated(prove_global, model, slots=1, timeout=10, out=None)
+    assert result.verdict is Verdict.VIOLATED
+    assert len(result.witness["rounds"][0]["active"]) == movers
+    check_replay(json.loads(json.dumps(result.witness)), model)

@@ -16,10 +16,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..cache import fingerprint
-from ..checker import check, check_to_json
+from ..checker import check, check_fingerprint, check_to_json
 from ..config import Model
-from ..prover import prove, results_json
+from ..prover import prove, prove_fingerprint, results_json
 from ..trace import check_replay, load_trace, write_trace
 from .pages import ASSETS, cross_model_html, cross_model_markdown, model_html, model_markdown
 from .pictures import frames
@@ -50,7 +49,7 @@ def _write(path: Path, data: Any) -> None:
 
 def cached_check(model: Model, cache: Path, traces: Path, refresh: bool) -> dict[str, Any]:
     """The model's check results (its own bounds), reused when the fingerprint matches."""
-    fp = fingerprint(model, "check")
+    fp = check_fingerprint(model)
     old = _read(cache)
     if old and old.get("fingerprint") == fp and not refresh:
         return old
@@ -68,7 +67,7 @@ def cached_check(model: Model, cache: Path, traces: Path, refresh: bool) -> dict
 
 def cached_prove(model: Model, proofs: Path, slots: int, timeout: float, refresh: bool) -> dict[str, Any]:
     """The model's prover results (``proofs/MODEL/results.json``), reused when the fingerprint matches."""
-    fp = fingerprint(model, "prove", slots=slots, timeout=timeout)
+    fp = prove_fingerprint(model, slots, timeout)
     cache = proofs / "results.json"
     old = _read(cache)
     if old and old.get("fingerprint") == fp and not refresh:

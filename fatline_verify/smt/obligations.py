@@ -23,10 +23,21 @@ import z3
 
 from ..algorithm import Rule
 from ..config import Model
-from ..options import Contact, PathShape, Timing
+from ..options import Contact, PathShape, Scheduler, Timing
 from .symbolic import MOVING, Slot, SymDecision, decide, make_slots, real, sq, view_reach, witness_bound
 
 FORMS = ("one-mover", "two-movers")
+ENCODING_VERSION = 2
+"""Bumped whenever an obligation's meaning changes (part of the cache fingerprint)."""
+
+
+def forms_for(scheduler: Scheduler) -> tuple[str, ...]:
+    """The per-rule forms a scheduler allows: one robot moving alone needs ssync or centralized (the
+    others at rest); two at once needs ssync. Under fsync every enabled robot moves, so only the
+    global form applies."""
+    return {Scheduler.SSYNC: FORMS, Scheduler.CENTRALIZED: ("one-mover",)}.get(scheduler, ())
+
+
 LEMMAS = ("no-collision", "connectivity")
 
 
@@ -154,12 +165,18 @@ def build_global(model: Model, k: int, initial: bool = False) -> Obligation:
             asserts.append(z3.Implies(z3.And(a.present, b.present), _apart(model, sq(a.x - b.x) + sq(a.y - b.y))))
     reach2 = real(view_reach(model) ** 2)
     after: list[SymPoint] = []
+    actives = [z3.Bool(f"a{i}") for i in range(k + 1)]
     for i, me in enumerate(everyone):
         view = [other.minus(me.x, me.y) for j, other in enumerate(everyone) if j != i]
         dec = decide(view, model, f"g{i}")
         asserts += dec.side
-        active = z3.Bool(f"a{i}")
+        active = actives[i]
         after.append((me.x + z3.If(active, dec.dx, real(0)), me.y + z3.If(active, dec.dy, real(0))))
+    scheduler = model.options.scheduler
+    if scheduler is Scheduler.FSYNC:  # every robot is activated
+        asserts += [a == c.present for a, c in zip(actives, everyone, strict=True)]
+    elif scheduler is Scheduler.CENTRALIZED:  # one robot a round
+        asserts.append(z3.PbEq([(a, 1) for a in actives], 1))
     present = [c.present for c in everyone]
     before = [(c.x, c.y) for c in everyone]
     asserts += [_connected(before, present, reach2), z3.Not(_connected(after, present, reach2))]
@@ -170,14 +187,14 @@ def build_global(model: Model, k: int, initial: bool = False) -> Obligation:
             f"Obligation: connectivity, global form, r and {k} slot robots (each may be absent).",
             "Claim (Lemma 1): a connected configuration stays connected after one semi-synchronous round.",
             "Encoding: every present robot decides from its own view of the others (symbolic decide); a symbolic "
-            "set of robots (a0, a1, ...) moves; the visibility graph is connected before and not after.",
+            "set of robots (a0, a1, ...) moves, as the scheduler allows (ssync: any set; centralized: exactly one; "
+            "fsync: all); the visibility graph is connected before and not after.",
             f"unsat proves the claim for configurations of at most {k + 1} robots, not for every size: the lemma is "
             "about the whole graph, so no single-robot witness argument applies.",
             "Assumptions: exact real arithmetic; robots are non-overlapping unit discs; one shared snapshot.",
         ]
     )
-    flags = [z3.Bool(f"a{i}") for i in range(k + 1)]
-    return Obligation("connectivity", "global", Rule.ALONE, k, False, comment, asserts, slots, flags)
+    return Obligation("connectivity", "global", Rule.ALONE, k, False, comment, asserts, slots, actives)
 
 
 def initial_condition(model: Model, slots: list[Slot]) -> list[z3.BoolRef]:
