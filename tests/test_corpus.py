@@ -81,3 +81,13 @@ def test_replay_writes_pictures(tmp_path, capsys):
     assert [p.name for p in pictures] == ["paper-check-no-collision-n3-0.svg", "paper-check-no-collision-n3-1.svg"]
     svg = pictures[0].read_text()
     assert svg.startswith("<?xml") and "no-collision" in svg and "closest squared centre distance" in svg
+
+
+def test_the_readme_shows_the_current_verdict_matrix():
+    """The README's copy of the readings x lemmas matrix is the generated one (links adjusted)."""
+    generated = (ROOT / "reports" / "README.md").read_text().splitlines()
+    rows = [line for line in generated if line.startswith("| [")]
+    assert rows
+    readme = (ROOT / "README.md").read_text()
+    for row in rows:
+        assert row.replace("](", "](reports/") in readme, row[:80]

@@ -54,6 +54,8 @@ def cached_check(model: Model, cache: Path, traces: Path, refresh: bool) -> dict
     if old and old.get("fingerprint") == fp and not refresh:
         return old
     result = check(model)
+    for stale in traces.glob(f"{model.name}-check-*.json"):
+        stale.unlink()
     paths = {}
     for r in result.results:
         if r.witness is not None:
@@ -72,6 +74,8 @@ def cached_prove(model: Model, proofs: Path, slots: int, timeout: float, refresh
     old = _read(cache)
     if old and old.get("fingerprint") == fp and not refresh:
         return old
+    for stale in [*proofs.glob("*/*.smt2"), *proofs.glob("traces/*.json")]:
+        stale.unlink()
     results = prove(model, slots=slots, timeout=timeout, out=proofs)
     paths = {}
     for r in results:
@@ -131,6 +135,10 @@ def _collect(model: Model, out: Path, check_data: dict[str, Any], prove_data: di
     for row in prove_data["obligations"]:
         if row.get("trace"):
             found.append(("prove", row["lemma"], f"{row['form']} {row['rule']}", row["verdict"], row["trace"]))
+    keep = {Path(path).name for *_, path in found}
+    for stale in [*corpus.glob(f"{model.name}-check-*.json"), *corpus.glob(f"{model.name}-prove-*.json")]:
+        if stale.name not in keep:
+            stale.unlink()
     traces = []
     for source, lemma, what, verdict, path in found:
         src = Path(path)

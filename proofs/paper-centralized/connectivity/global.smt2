@@ -1,6 +1,6 @@
 ; Obligation: connectivity, global form, r and 3 slot robots (each may be absent).
 ; Claim (Lemma 1): a connected configuration stays connected after one semi-synchronous round.
-; Encoding: every present robot decides from its own view of the others (symbolic decide); a symbolic set of robots (a0, a1, ...) moves; the visibility graph is connected before and not after.
+; Encoding: every present robot decides from its own view of the others (symbolic decide); a symbolic set of robots (a0, a1, ...) moves, as the scheduler allows (ssync: any set; centralized: exactly one; fsync: all); the visibility graph is connected before and not after.
 ; unsat proves the claim for configurations of at most 4 robots, not for every size: the lemma is about the whole graph, so no single-robot witness argument applies.
 ; Assumptions: exact real arithmetic; robots are non-overlapping unit discs; one shared snapshot.
 (set-logic QF_NRA)
@@ -21,10 +21,10 @@
 (declare-fun top_g2 () Real)
 (declare-fun psi0_g3 () Real)
 (declare-fun top_g3 () Real)
-(declare-fun a2 () Bool)
 (declare-fun a3 () Bool)
-(declare-fun a0 () Bool)
+(declare-fun a2 () Bool)
 (declare-fun a1 () Bool)
+(declare-fun a0 () Bool)
 (assert (let ((a!1 (>= (+ (* (- 0.0 x0) (- 0.0 x0)) (* (- 0.0 y0) (- 0.0 y0))) 4.0)))
   (=> (and true p0) a!1)))
 (assert (let ((a!1 (>= (+ (* (- 0.0 x1) (- 0.0 x1)) (* (- 0.0 y1) (- 0.0 y1))) 4.0)))
@@ -377,6 +377,7 @@
                 (=> a!4 (<= (- y0 y2) top_g3))
                 (=> a!6 (<= (- y1 y2) top_g3)))))
   (=> (or a!2 a!4 a!6) a!8))))))
+(assert ((_ pbeq 1 1 1 1 1) a0 a1 a2 a3))
 (assert (let ((a!1 (>= 16.0 (+ (* (- 0.0 x0) (- 0.0 x0)) (* (- 0.0 y0) (- 0.0 y0)))))
       (a!2 (>= 16.0 (+ (* (- 0.0 x1) (- 0.0 x1)) (* (- 0.0 y1) (- 0.0 y1)))))
       (a!3 (>= 16.0 (+ (* (- 0.0 x2) (- 0.0 x2)) (* (- 0.0 y2) (- 0.0 y2)))))

@@ -1,6 +1,6 @@
 ; Obligation: connectivity, global form, r and 3 slot robots (each may be absent).
 ; Claim (Lemma 1): a connected configuration stays connected after one semi-synchronous round.
-; Encoding: every present robot decides from its own view of the others (symbolic decide); a symbolic set of robots (a0, a1, ...) moves; the visibility graph is connected before and not after.
+; Encoding: every present robot decides from its own view of the others (symbolic decide); a symbolic set of robots (a0, a1, ...) moves, as the scheduler allows (ssync: any set; centralized: exactly one; fsync: all); the visibility graph is connected before and not after.
 ; unsat proves the claim for configurations of at most 4 robots, not for every size: the lemma is about the whole graph, so no single-robot witness argument applies.
 ; Assumptions: exact real arithmetic; robots are non-overlapping unit discs; one shared snapshot.
 (set-logic QF_NRA)
