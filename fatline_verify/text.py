@@ -31,6 +31,15 @@ def violation_line(v: dict[str, Any]) -> str:
         return f"{prop}: visibility graph split into {comps}; lost {edges}"
     if prop == "rma-fixed":
         return f"{prop}: {robots} went from the right-most axis x={v['rma_x']} to x={v['x_after']}"
+    if prop == "connectivity-edge":
+        (a, b), d2 = v["robots"], v["distance2_after"][0]
+        return f"{prop}: r{a} and r{b} no longer see each other (distance^2 {d2}); the graph stays connected"
+    if prop == "progress":
+        return f"{prop}: deadlock: no robot is enabled and the robots are not on a line"
+    if prop == "termination":
+        return f"{prop}: this execution never forms the line (a deadlock or a fair cycle)"
+    if prop == "approach":
+        return f"{prop}: {robots} left of the right-most axis never move right again"
     return f"{prop}: {robots}"
 
 
