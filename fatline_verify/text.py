@@ -68,8 +68,13 @@ def trace_lines(doc: dict[str, Any]) -> list[str]:
         "deadlock": "deadlock: no robot is enabled and the robots do not form a line",
         "violation": "stopped at a violation",
         "round-limit": "round limit reached: neither the goal, a deadlock nor a violation",
+        "cycle": "a fair cycle: the loop below repeats forever without forming the line",
     }[doc["outcome"]]
     lines.append(f"outcome after {n} round{'s' if n != 1 else ''}: {tail}")
+    if doc.get("loop_start") is not None:
+        lines.append(f"the rounds after round {doc['loop_start']} repeat forever (the swarm returns, translated)")
+    if doc.get("violation"):
+        lines.append("witnesses " + violation_line(doc["violation"]))
     return lines
 
 
