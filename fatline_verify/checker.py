@@ -23,10 +23,9 @@ from .explore.lattice import KeyCodec
 from .explore.liveness import fair_cycles
 from .explore.scalar import ScalarEngine, require_runnable
 from .explore.search import Exploration, explore
-from .explore.witness import lasso_witness, state_witness, transition_witness
+from .explore.witness import lasso_run, lasso_witness, state_witness, transition_witness
 from .properties import FLAG, SAFETY, Lemma, LemmaResult, StopReason, Verdict
-from .simulate import Outcome
-from .trace import approach_stuck, replay
+from .trace import approach_stuck
 
 MAX_LASSOS_TRIED = 20
 CHECKER_VERSION = 1
@@ -201,7 +200,7 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
         out[Lemma.PROGRESS] = _bounded(ex, Lemma.PROGRESS, liveness=False)
         lassos = fair_cycles(ex, expanded & ~ex.goal)
         if lassos:
-            doc = lasso_witness(ex, lassos[0].start, lassos[0].cycle, Lemma.TERMINATION.value)
+            doc = lasso_witness(lasso_run(ex, lassos[0].start, lassos[0].cycle), ex, Lemma.TERMINATION.value)
             out[Lemma.TERMINATION] = _result(
                 ex, Lemma.TERMINATION, Verdict.VIOLATED, "a fair cycle never forms the line", doc
             )
@@ -221,13 +220,9 @@ def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
         return _result(ex, Lemma.APPROACH, Verdict.VIOLATED, "no robot can move and some are left of the RMA", doc)
     lassos = fair_cycles(ex, ex.expanded)
     for lasso in lassos[:MAX_LASSOS_TRIED]:
-        from .explore.witness import _follow
-        from .simulate import Run
-
-        prefix = ex.path(lasso.start)
-        initial, rounds = _follow(ex, lasso.start, [*prefix, *lasso.cycle])
-        if approach_stuck(Run(ex.model, initial, tuple(rounds), Outcome.CYCLE, len(prefix))):
-            doc = lasso_witness(ex, lasso.start, lasso.cycle, Lemma.APPROACH.value)
+        run = lasso_run(ex, lasso.start, lasso.cycle)
+        if approach_stuck(run):
+            doc = lasso_witness(run, ex, Lemma.APPROACH.value)
             return _result(ex, Lemma.APPROACH, Verdict.VIOLATED, "a fair cycle where a robot never moves right", doc)
     if lassos:
         detail = f"{min(len(lassos), MAX_LASSOS_TRIED)} of {len(lassos)} fair cycles examined"
@@ -279,4 +274,4 @@ def check_to_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dic
     }
 
 
-__all__ = ["CheckResult", "SearchStats", "check", "check_robots", "lemma_verdicts", "replay"]
+__all__ = ["CheckResult", "SearchStats", "check", "check_robots", "lemma_verdicts"]

@@ -66,8 +66,13 @@ def state_witness(ex: Exploration, state_id: int, lemma: str) -> dict[str, Any]:
     return _finish(ex, Run(ex.model, initial, tuple(rounds), outcome), lemma)
 
 
-def lasso_witness(ex: Exploration, start: int, cycle: tuple[tuple[int, int], ...], lemma: str) -> dict[str, Any]:
-    """A shortest path to the loop's first state, then the fair loop."""
+def lasso_run(ex: Exploration, start: int, cycle: tuple[tuple[int, int], ...]) -> Run:
+    """A shortest path to the loop's first state, then the fair loop, played by the executable model."""
     prefix = ex.path(start)
     initial, rounds = _follow(ex, start, [*prefix, *cycle])
-    return _finish(ex, Run(ex.model, initial, tuple(rounds), Outcome.CYCLE, len(prefix)), lemma)
+    return Run(ex.model, initial, tuple(rounds), Outcome.CYCLE, len(prefix))
+
+
+def lasso_witness(run: Run, ex: Exploration, lemma: str) -> dict[str, Any]:
+    """The trace of a lasso run (from :func:`lasso_run`), replayed."""
+    return _finish(ex, run, lemma)

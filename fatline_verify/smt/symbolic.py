@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from fractions import Fraction
-from math import floor, isqrt
+from math import floor
 
 import z3
 
@@ -283,13 +283,9 @@ def witness_bound(rule: Rule, model: Model) -> int:
     return 4 + 2 * n + 1
 
 
-def slot_names(k: int) -> list[tuple[str, str, str]]:
-    return [(f"x{i}", f"y{i}", f"p{i}") for i in range(k)]
-
-
 def make_slots(k: int, prefix: str = "") -> list[Slot]:
     """``k`` fresh symbolic robots."""
     return [Slot(z3.Real(f"{prefix}x{i}"), z3.Real(f"{prefix}y{i}"), z3.Bool(f"{prefix}p{i}")) for i in range(k)]
 
 
-__all__ = ["MOVING", "RULES", "Slot", "SymDecision", "decide", "isqrt", "make_slots", "real", "witness_bound"]
+__all__ = ["MOVING", "RULES", "Slot", "SymDecision", "decide", "make_slots", "real", "witness_bound"]
