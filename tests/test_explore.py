@@ -140,3 +140,17 @@ def test_max_states_makes_liveness_inconclusive():
     assert result.stats[0].truncated
     verdicts = {r.lemma.value: r.verdict.value for r in result.results}
     assert verdicts["rma-fixed"] == "INCONCLUSIVE"  # no violation seen, but the search was cut short
+
+
+@pytest.mark.parametrize("readings", [{}, {"timing": "lockstep", "path": "vertical-then-horizontal"}])
+def test_collision_words_equal_the_general_table(readings):
+    """The 64-bit collision words (n <= 6) and the general (m, 2^n) table used beyond agree."""
+    model = make_model(**readings)
+    engine = FastEngine(model)
+    states = initial_array(4, (6, 6), model)
+    dest, corner = engine._destinations(states)
+    words = engine._collision_words(states, dest, corner)
+    table = engine._collisions_by_mask(states, dest, corner)
+    bits = ((words[:, None] >> np.arange(16, dtype=np.uint64)[None, :]) & np.uint64(1)).astype(bool)
+    assert np.array_equal(bits, table)
+    assert table.any()  # some activation set collides, so the comparison is not vacuous

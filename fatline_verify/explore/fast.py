@@ -172,6 +172,8 @@ class FastEngine:
         out = np.zeros((m, len(ii), 3), dtype=bool)
         for c, (a, ca, b, cb) in enumerate(cases):
             fields = [off[..., 0], off[..., 1], a[..., 0], a[..., 1], b[..., 0], b[..., 1]]
+            if any(f.size and (f.min() < -128 or f.max() > 127) for f in fields):
+                raise ValueError("a pair offset or move exceeds 127 lattice units; the fast engine packs 8 bits each")
             key = np.zeros(off.shape[:2], dtype=np.int64)
             for f in fields:
                 key = (key << 8) | (f + 128)
