@@ -86,8 +86,13 @@ def make_engine(name: str, model: Model) -> Engine:
     raise InvalidInput(f"engine={name!r}: expected scalar or fast")
 
 
-def validate_bounds(robots: tuple[int, int], window: tuple[int, int], max_states: int) -> None:
+def validate_bounds(robots: tuple[int, int], window: tuple[int, int], max_states: int, engine: str = "fast") -> None:
     """Reject bounds no search can meet, naming the value."""
+    if engine == "fast" and max(window) > 128:
+        raise InvalidInput(
+            f"window={window[0]}x{window[1]}: the fast engine packs offsets in 8 bits; expected at most 128x128 "
+            "or --engine scalar"
+        )
     if max_states < 1:
         raise InvalidInput(f"max-states={max_states}: expected a positive number of states")
     w, h = window
@@ -117,7 +122,7 @@ def check(
     robots = model.bounds.robots if robots is None else robots
     window = model.bounds.window if window is None else window
     max_states = model.bounds.max_states if max_states is None else max_states
-    validate_bounds(robots, window, max_states)
+    validate_bounds(robots, window, max_states, engine)
     stats, results = [], []
     for n in range(robots[0], robots[1] + 1):
         s, r = check_robots(model, n, window, max_states, engine, after_violation, progress)

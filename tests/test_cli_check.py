@@ -55,6 +55,7 @@ def test_check_exit_0_when_everything_holds(capsys, tmp_path):
         (["--robots", "5", "--window", "200x200"], "does not pack into 63 bits"),
         (["--robots", "3", "--window", "2x2"], "no initial configuration fits"),
         (["--max-states", "0"], "max-states=0"),
+        (["--robots", "2", "--window", "200x3"], "at most 128x128"),
         (["nope.toml"], "model='nope.toml'"),
     ],
 )
