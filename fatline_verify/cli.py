@@ -6,7 +6,6 @@ Handlers take parsed arguments and return an exit code; every bad input is one l
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 from collections.abc import Sequence
@@ -20,7 +19,7 @@ from .options import CATALOGUE, Scheduler
 from .simulate import Outcome, simulate
 from .swarm import State
 from .text import check_lines, explain_lines, prove_lines, trace_lines
-from .trace import check_replay, load_trace, run_to_json, write_trace
+from .trace import check_replay, load_trace, run_to_json, write_json, write_trace
 
 EXIT_OK, EXIT_FOUND, EXIT_BAD, EXIT_INCONCLUSIVE = 0, 1, 2, 3
 
@@ -156,7 +155,7 @@ def cmd_check(args: argparse.Namespace) -> int:
             paths[(r.lemma.value, r.robots)] = str(path)
     _print(check_lines(result, paths))
     if args.json:
-        _write_json(Path(args.json), check_to_json(result, paths))
+        write_json(Path(args.json), check_to_json(result, paths))
         print(f"results written to {args.json}")
     if result.any_violated:
         return EXIT_FOUND
@@ -198,10 +197,10 @@ def cmd_prove(args: argparse.Namespace) -> int:
     from .prover import prove_fingerprint
 
     data = {"fingerprint": prove_fingerprint(model, args.slots, args.timeout), **results_json(model, results, traces)}
-    _write_json(out / "results.json", data)
+    write_json(out / "results.json", data)
     _print(prove_lines(model, results, traces, out))
     if args.json:
-        _write_json(Path(args.json), data)
+        write_json(Path(args.json), data)
     if any(r.verdict.value == "VIOLATED" for r in results):
         return EXIT_FOUND
     return EXIT_INCONCLUSIVE if any(r.verdict.value == "INCONCLUSIVE" for r in results) else EXIT_OK
@@ -245,13 +244,6 @@ def _with_q(model: Model, q: int) -> Model:
 
     p = model.parameters
     return replace(model, parameters=Parameters(rad_v=p.rad_v, q=q, delta=p.delta))
-
-
-def _write_json(path: Path, data: object) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(json.dumps(data, indent=1) + "\n", encoding="utf-8")
-    tmp.replace(path)
 
 
 class _Progress:

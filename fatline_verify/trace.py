@@ -197,13 +197,18 @@ def _loop_meets_goal(run: Run) -> bool:
     return any(is_goal(run.state_at(k), run.model) for k in range(run.loop_start, len(run.rounds)))
 
 
+def write_json(path: Path, data: Any) -> None:
+    """Write JSON atomically (a temporary file, then a rename): a reader never sees half a file."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(json.dumps(data, indent=1) + "\n", encoding="utf-8")
+    tmp.replace(path)
+
+
 def write_trace(doc: dict[str, Any], path: Path) -> None:
     """Write a trace document (validated first, so nothing malformed is ever written)."""
     validate(doc, where=str(path))
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(json.dumps(doc, indent=1) + "\n", encoding="utf-8")
-    tmp.replace(path)
+    write_json(path, doc)
 
 
 # --- from JSON --------------------------------------------------------------------------------------

@@ -19,7 +19,7 @@ from typing import Any
 from ..checker import check, check_fingerprint, check_to_json
 from ..config import Model
 from ..prover import prove, prove_fingerprint, results_json
-from ..trace import check_replay, load_trace, write_trace
+from ..trace import check_replay, load_trace, write_json, write_trace
 from .pages import ASSETS, cross_model_html, cross_model_markdown, model_html, model_markdown
 from .pictures import frames
 
@@ -42,11 +42,6 @@ def _read(path: Path) -> dict[str, Any] | None:
         return None
 
 
-def _write(path: Path, data: Any) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(json.dumps(data, indent=1, sort_keys=False) + "\n", encoding="utf-8")
-
-
 def cached_check(model: Model, cache: Path, traces: Path, refresh: bool) -> dict[str, Any]:
     """The model's check results (its own bounds), reused when the fingerprint matches."""
     fp = check_fingerprint(model)
@@ -63,7 +58,7 @@ def cached_check(model: Model, cache: Path, traces: Path, refresh: bool) -> dict
             write_trace(r.witness, path)
             paths[(r.lemma.value, r.robots)] = path.as_posix()
     data = {"fingerprint": fp, **check_to_json(result, paths)}
-    _write(cache, data)
+    write_json(cache, data)
     return data
 
 
@@ -84,7 +79,7 @@ def cached_prove(model: Model, proofs: Path, slots: int, timeout: float, refresh
             write_trace(r.witness, path)
             paths[f"{r.lemma}/{r.form}-{r.rule}"] = path.as_posix()
     data = {"fingerprint": fp, **results_json(model, results, paths)}
-    _write(cache, data)
+    write_json(cache, data)
     return data
 
 
