@@ -11,6 +11,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -233,6 +234,19 @@ def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
         detail = f"{min(len(lassos), MAX_LASSOS_TRIED)} of {len(lassos)} fair cycles examined"
         return _result(ex, Lemma.APPROACH, Verdict.INCONCLUSIVE, StopReason.CYCLE_NOT_DECISIVE.describe(detail))
     return _bounded(ex, Lemma.APPROACH, liveness=True)
+
+
+def write_witnesses(result: CheckResult, directory: Path, prefix: str) -> dict[tuple[str, int], str]:
+    """Write every witness as ``DIRECTORY/PREFIX<lemma>-n<robots>.json``; the paths by (lemma, robots)."""
+    from .trace import write_trace
+
+    paths = {}
+    for r in result.results:
+        if r.witness is not None:
+            path = directory / f"{prefix}{r.lemma.value}-n{r.robots}.json"
+            write_trace(r.witness, path)
+            paths[(r.lemma.value, r.robots)] = path.as_posix()
+    return paths
 
 
 def check_fingerprint(model: Model) -> str:

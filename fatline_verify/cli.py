@@ -123,7 +123,7 @@ def cmd_replay(args: argparse.Namespace) -> int:
 
 
 def cmd_check(args: argparse.Namespace) -> int:
-    from .checker import check, check_to_json
+    from .checker import check, check_to_json, write_witnesses
 
     model = load_model(args.model)
     robots = parse_robots(args.robots, error=InvalidInput) if args.robots else None
@@ -147,12 +147,7 @@ def cmd_check(args: argparse.Namespace) -> int:
             after_violation=args.after_violation,
             progress=bar.update,
         )
-    paths: dict[tuple[str, int], str] = {}
-    for r in result.results:
-        if r.witness is not None:
-            path = traces_dir / f"{model.name}-{r.lemma.value}-n{r.robots}.json"
-            write_trace(r.witness, path)
-            paths[(r.lemma.value, r.robots)] = str(path)
+    paths = write_witnesses(result, traces_dir, f"{model.name}-")
     _print(check_lines(result, paths))
     if args.json:
         write_json(Path(args.json), check_to_json(result, paths))
@@ -163,7 +158,7 @@ def cmd_check(args: argparse.Namespace) -> int:
 
 
 def cmd_prove(args: argparse.Namespace) -> int:
-    from .prover import prove, results_json
+    from .prover import prove, prove_fingerprint, results_json, write_witnesses
     from .smt.obligations import LEMMAS
 
     model = load_model(args.model)
@@ -188,13 +183,7 @@ def cmd_prove(args: argparse.Namespace) -> int:
     results = prove(model, lemmas, slots=args.slots, timeout=args.timeout, out=out, jobs=args.jobs, progress=tick)
     if not args.quiet and sys.stderr.isatty():
         print(file=sys.stderr)
-    traces: dict[str, str] = {}
-    for r in results:
-        if r.witness is not None:
-            path = traces_dir / f"{model.name}-prove-{r.lemma}-{r.form}-{r.rule}.json"
-            write_trace(r.witness, path)
-            traces[f"{r.lemma}/{r.form}-{r.rule}"] = path.as_posix()
-    from .prover import prove_fingerprint
+    traces = write_witnesses(model, results, traces_dir)
 
     data = {"fingerprint": prove_fingerprint(model, args.slots, args.timeout), **results_json(model, results, traces)}
     write_json(out / "results.json", data)

@@ -257,6 +257,19 @@ def isolated(fn: Callable[..., ProofResult], *args: Any, **kwargs: Any) -> Proof
         return pool.submit(fn, *args, **kwargs).result()
 
 
+def write_witnesses(model: Model, results: list[ProofResult], directory: Path) -> dict[str, str]:
+    """Write every counterexample as ``DIRECTORY/MODEL-prove-LEMMA-FORM-RULE.json``; paths by "lemma/form-rule"."""
+    from .trace import write_trace
+
+    paths = {}
+    for r in results:
+        if r.witness is not None:
+            path = directory / f"{model.name}-prove-{r.lemma}-{r.form}-{r.rule}.json"
+            write_trace(r.witness, path)
+            paths[f"{r.lemma}/{r.form}-{r.rule}"] = path.as_posix()
+    return paths
+
+
 def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     """What a prover result depends on: the model, the settings, the encoding's version."""
     from .cache import fingerprint

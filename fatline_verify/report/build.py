@@ -16,10 +16,11 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..checker import check, check_fingerprint, check_to_json
+from .. import prover
+from ..checker import check, check_fingerprint, check_to_json, write_witnesses
 from ..config import Model
 from ..prover import prove, prove_fingerprint, results_json
-from ..trace import check_replay, load_trace, write_json, write_trace
+from ..trace import check_replay, load_trace, write_json
 from .pages import ASSETS, cross_model_html, cross_model_markdown, model_html, model_markdown
 from .pictures import frames
 
@@ -51,12 +52,7 @@ def cached_check(model: Model, cache: Path, traces: Path, refresh: bool) -> dict
     result = check(model)
     for stale in traces.glob(f"{model.name}-check-*.json"):
         stale.unlink()
-    paths = {}
-    for r in result.results:
-        if r.witness is not None:
-            path = traces / f"{model.name}-check-{r.lemma.value}-n{r.robots}.json"
-            write_trace(r.witness, path)
-            paths[(r.lemma.value, r.robots)] = path.as_posix()
+    paths = write_witnesses(result, traces, f"{model.name}-check-")
     data = {"fingerprint": fp, **check_to_json(result, paths)}
     write_json(cache, data)
     return data
@@ -72,12 +68,7 @@ def cached_prove(model: Model, proofs: Path, slots: int, timeout: float, refresh
     for stale in [*proofs.glob("*/*.smt2"), *proofs.glob("traces/*.json")]:
         stale.unlink()
     results = prove(model, slots=slots, timeout=timeout, out=proofs)
-    paths = {}
-    for r in results:
-        if r.witness is not None:
-            path = proofs / "traces" / f"{model.name}-prove-{r.lemma}-{r.form}-{r.rule}.json"
-            write_trace(r.witness, path)
-            paths[f"{r.lemma}/{r.form}-{r.rule}"] = path.as_posix()
+    paths = prover.write_witnesses(model, results, proofs / "traces")
     data = {"fingerprint": fp, **results_json(model, results, paths)}
     write_json(cache, data)
     return data
