@@ -15,7 +15,6 @@ rule breaks the lemma (:mod:`fatline_verify.smt.obligations`). Answers become ve
 
 from __future__ import annotations
 
-import json
 import multiprocessing
 import os
 from collections.abc import Callable
@@ -34,7 +33,7 @@ from .simulate import Outcome, Run, outcome_after
 from .smt import obligations as ob
 from .smt.symbolic import MOVING
 from .swarm import initial_problems
-from .trace import check_replay, lost_edges, run_to_json
+from .trace import lost_edges, replayed_document
 
 
 @dataclass(frozen=True, slots=True)
@@ -82,9 +81,7 @@ def replay_answer(
         focus = "connectivity" if any(v.lemma == "connectivity" for v in result.violations) else "connectivity-edge"
     run = Run(model, state, (result,), outcome_after(result.after, result, model) or Outcome.ROUND_LIMIT)
     origin = {"tool": "fatline prove", "lemma": lemma, "form": form, "rule": rule.value}
-    doc = json.loads(json.dumps(run_to_json(run, origin, focus=focus)))
-    check_replay(doc, model)
-    return doc, not initial_problems(state, model)
+    return replayed_document(run, origin, focus), not initial_problems(state, model)
 
 
 def prove_one(
@@ -182,8 +179,7 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
             )
         run = Run(model, state, (run_result,), Outcome.VIOLATION)
         origin = {"tool": "fatline prove", "lemma": "connectivity", "form": "global"}
-        doc = json.loads(json.dumps(run_to_json(run, origin, focus="connectivity")))
-        check_replay(doc, model)
+        doc = replayed_document(run, origin, "connectivity")
         if not initial_problems(state, model):
             return result(
                 Verdict.VIOLATED, k, f"the graph splits, from an initial configuration of {k + 1} robots", doc

@@ -328,6 +328,14 @@ def differences(doc: dict[str, Any], run: Run) -> list[str]:
     return [d for key in keys for d in _walk(doc.get(key), again.get(key), key)]
 
 
+def replayed_document(run: Run, origin: dict[str, Any], focus: str) -> dict[str, Any]:
+    """The trace of ``run`` as it reads back from JSON, replayed under the run's own model: what a
+    tool may report as a witness of ``focus``."""
+    doc = json.loads(json.dumps(run_to_json(run, origin, focus=focus)))
+    check_replay(doc, run.model)
+    return doc
+
+
 def check_replay(doc: dict[str, Any], model: Model | None = None) -> Run:
     """Replay ``doc``; raise :class:`TraceDidNotReproduce` naming the first differing value."""
     run = replay(doc, model)

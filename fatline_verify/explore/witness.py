@@ -10,7 +10,6 @@ bug of the tool and is raised, never reported as a counterexample.
 
 from __future__ import annotations
 
-import json
 from typing import Any
 
 import numpy as np
@@ -19,7 +18,7 @@ from ..errors import FatlineError
 from ..schedule import RoundResult, play_round
 from ..simulate import Outcome, Run
 from ..swarm import State
-from ..trace import check_replay, run_to_json
+from ..trace import replayed_document
 from .lattice import canonical
 from .search import Exploration
 
@@ -44,10 +43,9 @@ def _follow(ex: Exploration, start_id: int, steps: list[tuple[int, int]]) -> tup
 
 def _finish(ex: Exploration, run: Run, lemma: str) -> dict[str, Any]:
     origin = {"tool": "fatline check", "lemma": lemma, "engine": ex.engine, "robots": ex.n, "window": list(ex.window)}
-    doc = json.loads(json.dumps(run_to_json(run, origin, focus=lemma)))
+    doc = replayed_document(run, origin, lemma)
     if doc["violation"] is None or doc["violation"]["property"] != lemma:
         raise EngineDisagreement(f"{lemma} witness: the executable model does not show the violation")
-    check_replay(doc, ex.model)
     return doc
 
 
