@@ -28,12 +28,12 @@ from .algorithm import Rule
 from .config import Model
 from .options import Scheduler, Uncovered
 from .properties import Verdict
-from .schedule import Collision, decide_all, play_round
+from .schedule import Collision, decide_all, lost_edges, play_round
 from .simulate import Outcome, Run, outcome_after
 from .smt import obligations as ob
 from .smt.symbolic import MOVING
 from .swarm import initial_problems
-from .trace import lost_edges, replayed_document
+from .trace import replayed_document
 
 
 @dataclass(frozen=True, slots=True)
@@ -76,7 +76,7 @@ def replay_answer(
             return "r and robot 1 do not collide in the replayed round"
         focus = "no-collision"
     else:
-        if not any(pair == (0, 1) for pair, _ in lost_edges(result, model)):
+        if not any(pair == (0, 1) for pair, _ in lost_edges(result.before, result.after, model)):
             return "r and robot 1 keep their edge in the replayed round"
         focus = "connectivity" if any(v.lemma == "connectivity" for v in result.violations) else "connectivity-edge"
     run = Run(model, state, (result,), outcome_after(result.after, result, model) or Outcome.ROUND_LIMIT)

@@ -145,14 +145,26 @@ def rma_violations(before: Sequence[Point], after: Sequence[Point]) -> list[RmaM
     ]
 
 
+def lost_edges(before: Sequence[Point], after: Sequence[Point], model: Model) -> list[tuple[tuple[int, int], Number]]:
+    """Pairs ``i < j`` that saw each other before the round and do not after it, with their squared
+    distance after, in pair order."""
+    out = []
+    for i in range(len(before)):
+        for j in range(i + 1, len(before)):
+            d_before = (before[i][0] - before[j][0]) ** 2 + (before[i][1] - before[j][1]) ** 2
+            d_after = (after[i][0] - after[j][0]) ** 2 + (after[i][1] - after[j][1]) ** 2
+            if model.sees(d_before) and not model.sees(d_after):
+                out.append(((i, j), d_after))
+    return out
+
+
 def disconnection(before: Sequence[Point], after: Sequence[Point], model: Model) -> Disconnection | None:
     """The lost connectivity, when the graph was connected before and is not after."""
     if is_connected(after, model) or not is_connected(before, model):
         return None
-    g_after = visibility_graph(after, model)
-    lost = sorted(tuple(sorted(e)) for e in visibility_graph(before, model).edges if not g_after.has_edge(*e))
-    comps = sorted(tuple(sorted(c)) for c in nx.connected_components(g_after))
-    return Disconnection(tuple(comps), tuple(lost))  # type: ignore[arg-type]
+    lost = tuple(pair for pair, _ in lost_edges(before, after, model))
+    comps = sorted(tuple(sorted(c)) for c in nx.connected_components(visibility_graph(after, model)))
+    return Disconnection(tuple(comps), lost)
 
 
 def play_round(

@@ -23,7 +23,17 @@ import jsonschema
 from .config import Model, model_from_mapping, model_to_mapping
 from .errors import FatlineError, InvalidTrace, TraceDidNotReproduce
 from .numbers import Number, Point, format_number, parse_number
-from .schedule import Collision, Disconnection, RmaMoved, RoundResult, Violation, decide_all, enabled, play_round
+from .schedule import (
+    Collision,
+    Disconnection,
+    RmaMoved,
+    RoundResult,
+    Violation,
+    decide_all,
+    enabled,
+    lost_edges,
+    play_round,
+)
 from .simulate import Outcome, Run, outcome_after
 from .swarm import State, is_goal
 
@@ -162,7 +172,8 @@ def derive_violation(run: Run, rounds: list[dict[str, Any]], focus: str | None) 
         match = next((v for v in rounds[-1]["violations"] if v["property"] == focus), None)
         return None if match is None else {**match, "round": n_rounds}
     if focus == "connectivity-edge":
-        lost = lost_edges(run.rounds[-1], run.model) if run.rounds else []
+        last = run.rounds[-1] if run.rounds else None
+        lost = lost_edges(last.before, last.after, run.model) if last else []
         if not lost:
             return None
         (i, j), d2 = lost[0]
@@ -177,19 +188,6 @@ def derive_violation(run: Run, rounds: list[dict[str, Any]], focus: str | None) 
         stuck = approach_stuck(run) if run.outcome in (Outcome.CYCLE, Outcome.DEADLOCK, Outcome.GOAL) else []
         return {"property": focus, "robots": stuck, "round": n_rounds} if stuck else None
     raise InvalidTrace(f"violation.property={focus!r}: unknown lemma")
-
-
-def lost_edges(r: RoundResult, model: Model) -> list[tuple[tuple[int, int], Number]]:
-    """Pairs that saw each other before the round and do not after it, with their squared distance after."""
-    out = []
-    for i in range(len(r.before)):
-        for j in range(i + 1, len(r.before)):
-            b, a = r.before, r.after
-            before = (b[i][0] - b[j][0]) ** 2 + (b[i][1] - b[j][1]) ** 2
-            after = (a[i][0] - a[j][0]) ** 2 + (a[i][1] - a[j][1]) ** 2
-            if model.sees(before) and not model.sees(after):
-                out.append(((i, j), after))
-    return out
 
 
 def _loop_meets_goal(run: Run) -> bool:
