@@ -60,12 +60,6 @@ class CheckResult:
     stats: tuple[SearchStats, ...]
     results: tuple[LemmaResult, ...]
 
-    def overall(self, lemma: Lemma) -> LemmaResult:
-        """The worst verdict over robot counts (VIOLATED, then INCONCLUSIVE, then HOLDS)."""
-        rank = {Verdict.VIOLATED: 0, Verdict.INCONCLUSIVE: 1, Verdict.HOLDS_WITHIN_BOUNDS: 2, Verdict.PROVED: 3}
-        mine = [r for r in self.results if r.lemma is lemma]
-        return min(mine, key=lambda r: (rank[r.verdict], r.robots))
-
     @property
     def any_violated(self) -> bool:
         return any(r.verdict is Verdict.VIOLATED for r in self.results)

@@ -83,12 +83,3 @@ def connected(states: np.ndarray, model: Model) -> np.ndarray:
             grown |= np.where((reach >> i) & 1 == 1, bits[:, i], 0)
         reach = grown
     return reach == (1 << n) - 1
-
-
-def min_pair_dist2(states: np.ndarray) -> np.ndarray:
-    """Per state, the least squared distance between two robots."""
-    m, n, _ = states.shape
-    diff = states[:, :, None, :] - states[:, None, :, :]
-    d2 = (diff * diff).sum(axis=-1)
-    d2[:, np.arange(n), np.arange(n)] = np.iinfo(np.int64).max
-    return d2.reshape(m, -1).min(axis=1)
