@@ -15,6 +15,7 @@ from enum import StrEnum
 from .config import Model
 from .errors import Unsupported
 from .options import Scheduler
+from .algorithm import Decision
 from .schedule import RoundResult, decide_all, enabled, play_round
 from .swarm import State, is_goal, require_initial
 
@@ -52,7 +53,9 @@ class Run:
         return self.rounds[-1].after if self.rounds else self.initial
 
 
-def outcome_after(state: State, last: RoundResult | None, model: Model) -> Outcome | None:
+def outcome_after(
+    state: State, last: RoundResult | None, model: Model, decisions: dict[int, Decision] | None = None
+) -> Outcome | None:
     """The outcome if the run ends at ``state`` (reached by ``last``), else ``None``.
 
     A violating round ends the run; then the goal ("form a straight line") ends it; then a state
@@ -63,7 +66,7 @@ def outcome_after(state: State, last: RoundResult | None, model: Model) -> Outco
         return Outcome.VIOLATION
     if is_goal(state, model):
         return Outcome.GOAL
-    if not enabled(decide_all(state, model)):
+    if not enabled(decide_all(state, model) if decisions is None else decisions):
         return Outcome.DEADLOCK
     return None
 
@@ -105,13 +108,13 @@ def simulate(
     state, last = initial, None
     rounds: list[RoundResult] = []
     while True:
-        outcome = outcome_after(state, last, model)
+        decisions = decide_all(state, model)
+        outcome = outcome_after(state, last, model, decisions)
         if outcome is not None:
             break
         if len(rounds) >= max_rounds:
             outcome = Outcome.ROUND_LIMIT
             break
-        decisions = decide_all(state, model)
         active = chooser.choose(enabled(decisions))
         last = play_round(state, active, model, decisions)
         rounds.append(last)
