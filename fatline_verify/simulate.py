@@ -12,10 +12,10 @@ import random
 from dataclasses import dataclass, field
 from enum import StrEnum
 
+from .algorithm import Decision
 from .config import Model
 from .errors import Unsupported
 from .options import Scheduler
-from .algorithm import Decision
 from .schedule import RoundResult, decide_all, enabled, play_round
 from .swarm import State, is_goal, require_initial
 
