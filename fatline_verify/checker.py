@@ -9,8 +9,9 @@ INCONCLUSIVE with the reason. The engine never prints; progress goes through a c
 from __future__ import annotations
 
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
+from math import isqrt
 from pathlib import Path
 from typing import Any
 
@@ -25,11 +26,12 @@ from .explore.liveness import fair_cycles
 from .explore.scalar import ScalarEngine, require_runnable
 from .explore.search import Exploration, explore
 from .explore.witness import lasso_run, lasso_witness, state_witness, transition_witness
+from .outputs import Kind, child
 from .properties import FLAG, SAFETY, Lemma, LemmaResult, StopReason, Verdict
 from .trace import approach_stuck
 
 MAX_LASSOS_TRIED = 20
-CHECKER_VERSION = 1
+CHECKER_VERSION = 2
 """Bumped whenever the checker's semantics change (part of the report cache's fingerprint)."""
 
 
@@ -59,6 +61,8 @@ class CheckResult:
     after_violation: str
     stats: tuple[SearchStats, ...]
     results: tuple[LemmaResult, ...]
+    complete: bool = True
+    """False when the run was interrupted: only the robot counts in ``stats`` were searched."""
 
     @property
     def any_violated(self) -> bool:
@@ -103,6 +107,27 @@ def validate_bounds(robots: tuple[int, int], window: tuple[int, int], max_states
             ) from None
 
 
+MAX_VIEW_OFFSETS = 1_000_000
+"""The initial enumeration keeps one entry per lattice offset a robot sees; past this many, refuse."""
+
+
+def validate_resources(model: Model, robots: tuple[int, int], window: tuple[int, int]) -> None:
+    """Refuse, before any work, a search whose lattice cannot fit in memory or that has nothing to search."""
+    reach = isqrt(model.view2)
+    offsets = (2 * reach + 1) ** 2
+    if offsets > MAX_VIEW_OFFSETS:
+        raise InvalidInput(
+            f"q={model.parameters.q}: a robot sees {offsets:,} lattice offsets (rad_v={model.parameters.rad_v}, "
+            f"q={model.parameters.q}), more than {MAX_VIEW_OFFSETS:,} fit in memory; expected a smaller --q"
+        )
+    w, h = window
+    if robots[1] >= 2 and (w - 1) ** 2 + (h - 1) ** 2 < model.apart2:
+        raise InvalidInput(
+            f"window={w}x{h}: no two robots fit at distance >= delta={model.parameters.delta} "
+            f"({model.parameters.q} lattice points per radius); expected a larger --window"
+        )
+
+
 def check(
     model: Model,
     robots: tuple[int, int] | None = None,
@@ -114,16 +139,60 @@ def check(
     progress: Callable[[str, int, int], None] | None = None,
 ) -> CheckResult:
     """Check every lemma for every robot count in ``robots`` (bounds default to the model's)."""
-    robots = model.bounds.robots if robots is None else robots
-    window = model.bounds.window if window is None else window
-    max_states = model.bounds.max_states if max_states is None else max_states
-    validate_bounds(robots, window, max_states, engine)
-    stats, results = [], []
-    for n in range(robots[0], robots[1] + 1):
-        s, r = check_robots(model, n, window, max_states, engine, after_violation, progress)
-        stats.append(s)
-        results.extend(r)
-    return CheckResult(model, window, max_states, after_violation, tuple(stats), tuple(results))
+    plan = CheckPlan.of(model, robots, window, max_states, engine, after_violation)
+    return plan.result(list(plan.searches(progress)))
+
+
+@dataclass(frozen=True, slots=True)
+class CheckPlan:
+    """A validated check: the model and its bounds, run one robot count at a time (so an interrupted
+    run keeps the counts it finished)."""
+
+    model: Model
+    robots: tuple[int, int]
+    window: tuple[int, int]
+    max_states: int
+    engine: str
+    after_violation: str
+
+    @classmethod
+    def of(
+        cls,
+        model: Model,
+        robots: tuple[int, int] | None = None,
+        window: tuple[int, int] | None = None,
+        max_states: int | None = None,
+        engine: str = "fast",
+        after_violation: str = "stop",
+    ) -> CheckPlan:
+        """Fill the model's default bounds and reject what no search can meet, before any work."""
+        robots = model.bounds.robots if robots is None else robots
+        window = model.bounds.window if window is None else window
+        max_states = model.bounds.max_states if max_states is None else max_states
+        validate_bounds(robots, window, max_states, engine)
+        validate_resources(model, robots, window)
+        require_runnable(model)
+        return cls(model, robots, window, max_states, engine, after_violation)
+
+    @property
+    def counts(self) -> range:
+        return range(self.robots[0], self.robots[1] + 1)
+
+    def searches(
+        self, progress: Callable[[str, int, int], None] | None = None
+    ) -> Iterator[tuple[SearchStats, list[LemmaResult]]]:
+        """One finished search per robot count, smallest first."""
+        for n in self.counts:
+            yield check_robots(
+                self.model, n, self.window, self.max_states, self.engine, self.after_violation, progress
+            )
+
+    def result(self, done: list[tuple[SearchStats, list[LemmaResult]]]) -> CheckResult:
+        """The result of the searches in ``done`` (all of them, or those finished before an interrupt)."""
+        stats = tuple(s for s, _ in done)
+        results = tuple(r for _, rs in done for r in rs)
+        complete = len(done) == len(self.counts)
+        return CheckResult(self.model, self.window, self.max_states, self.after_violation, stats, results, complete)
 
 
 def check_robots(
@@ -138,13 +207,15 @@ def check_robots(
     """Explore every execution of ``n`` robots and give every lemma its verdict."""
     t0 = time.perf_counter()
     engine = make_engine(engine_name, model)
+    if progress:
+        progress(f"n={n}: enumerating initial configurations in {window[0]}x{window[1]}", 0, 0)
     initial = initial_array(n, window, model)
     if not len(initial):
         raise InvalidInput(
-            f"robots={n} window={window[0]}x{window[1]}: no initial configuration fits (pairwise distance > delta "
+            f"robots={n} window={window[0]}x{window[1]}: no initial configuration fits (pairwise distance >= delta "
             "and connected); expected a larger window"
         )
-    tick = (lambda level, done, total: progress(f"n={n} level {level}", done, total)) if progress else None
+    tick = (lambda level, done, total: progress(f"n={n}: level {level}", done, total)) if progress else None
     ex = explore(model, initial, window, engine, max_states=max_states, after_violation=after_violation, progress=tick)
     results = lemma_verdicts(ex)
     stats = SearchStats(
@@ -170,7 +241,15 @@ def _result(ex: Exploration, lemma: Lemma, verdict: Verdict, reason: str = "", d
 def _bounded(ex: Exploration, lemma: Lemma, liveness: bool) -> LemmaResult:
     """No violation found: HOLDS_WITHIN_BOUNDS, unless a bound cut the search short."""
     if ex.truncated:
-        return _result(ex, lemma, Verdict.INCONCLUSIVE, StopReason.MAX_STATES.describe(f"{ex.n_states} states"))
+        return _result(
+            ex,
+            lemma,
+            Verdict.INCONCLUSIVE,
+            StopReason.MAX_STATES.describe(
+                f"{ex.n_states:,} states found, {ex.n_states - int(ex.expanded.sum()):,} of them unexplored; "
+                f"rerun with --max-states {ex.n_states:,} or more (deeper levels may need more)"
+            ),
+        )
     if liveness and ex.escaped:
         return _result(ex, lemma, Verdict.INCONCLUSIVE, StopReason.WINDOW.describe(f"{ex.escaped} transitions"))
     w, h = ex.window
@@ -230,6 +309,16 @@ def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
     return _bounded(ex, Lemma.APPROACH, liveness=True)
 
 
+def witness_path(directory: Path, prefix: str, lemma: Lemma, robots: int) -> Path:
+    """Where :func:`write_witnesses` puts the witness of ``lemma`` for ``robots`` robots."""
+    return child(directory, f"{prefix}{lemma.value}-n{robots}", ".json")
+
+
+def witness_paths(plan: CheckPlan, directory: Path, prefix: str) -> list[Path]:
+    """Every file a check of ``plan`` may write into ``directory`` (checked before the run)."""
+    return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in Lemma]
+
+
 def write_witnesses(result: CheckResult, directory: Path, prefix: str) -> dict[tuple[str, int], str]:
     """Write every witness as ``DIRECTORY/PREFIX<lemma>-n<robots>.json``; the paths by (lemma, robots)."""
     from .trace import write_trace
@@ -237,7 +326,7 @@ def write_witnesses(result: CheckResult, directory: Path, prefix: str) -> dict[t
     paths = {}
     for r in result.results:
         if r.witness is not None:
-            path = directory / f"{prefix}{r.lemma.value}-n{r.robots}.json"
+            path = witness_path(directory, prefix, r.lemma, r.robots)
             write_trace(r.witness, path)
             paths[(r.lemma.value, r.robots)] = path.as_posix()
     return paths
@@ -255,6 +344,8 @@ def check_to_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dic
     from .config import model_to_mapping
 
     return {
+        "format": Kind.CHECK.value,
+        "complete": result.complete,
         "model": model_to_mapping(result.model),
         "window": list(result.window),
         "max_states": result.max_states,

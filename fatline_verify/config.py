@@ -8,6 +8,7 @@ and two discs touch at ``2 q``. Positions at the boundary (CLI, traces) are in r
 
 from __future__ import annotations
 
+import math
 import tomllib
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -18,6 +19,7 @@ from typing import Any
 from .errors import InvalidModel
 from .numbers import Number, Point, format_number, normalize, parse_number
 from .options import Options, Visibility, options_from_mapping
+from .outputs import SLUG
 
 MODELS_DIR = Path(__file__).parent / "models"
 """Where the shipped model files live (``models/`` at the top of the repository links here)."""
@@ -28,7 +30,7 @@ class Parameters:
     """The paper's free parameters. It fixes none of them; the shipped models pick small values.
 
     ``rad_v``: visibility radius in radii. ``q``: lattice points per radius. ``delta``: the initial
-    condition "the mutual distance between two robots is at least delta > 2", read as distance > delta.
+    condition "the mutual distance between two robots is at least delta > 2": distance >= delta, and delta > 2.
     """
 
     rad_v: Number = 4
@@ -100,17 +102,18 @@ class Model:
 
     @property
     def apart2(self) -> int:
-        """The least integer squared lattice distance that meets the initial condition (> delta)."""
+        """The least integer squared lattice distance that meets the initial condition (>= delta)."""
         bound = (Fraction(self.parameters.delta) * self.parameters.q) ** 2
-        return int(bound) + 1
+        return math.ceil(bound)
 
     def sees(self, d2: Number) -> bool:
         """Whether a robot at squared distance ``d2`` is visible (the boundary is included)."""
         return d2 <= self.view2
 
     def initially_apart(self, d2: Number) -> bool:
-        """The initial condition on one pair: distance > delta, i.e. ``d2 > (delta q)^2``."""
-        return d2 > (Fraction(self.parameters.delta) * self.parameters.q) ** 2
+        """The initial condition on one pair: "the mutual distance between two robots is at least
+        delta > 2", i.e. ``d2 >= (delta q)^2`` (distance exactly delta meets it)."""
+        return d2 >= (Fraction(self.parameters.delta) * self.parameters.q) ** 2
 
     def to_lattice(self, point: Point) -> Point:
         """Radius units to lattice units."""
@@ -209,8 +212,10 @@ def model_from_mapping(data: dict[str, object], *, source: str = "", default_nam
         if verdict not in _VERDICTS:
             raise InvalidModel(f"expected.{lemma}={verdict!r}: unknown verdict; expected one of {', '.join(_VERDICTS)}")
     name = data.get("name", default_name)
-    if not isinstance(name, str) or not name:
-        raise InvalidModel(f"name={name!r}: expected a non-empty string")
+    if not isinstance(name, str) or not SLUG.match(name) or name in (".", ".."):
+        raise InvalidModel(
+            f"name={name!r}: expected a slug of lower-case letters, digits, '.', '_' and '-' (it names output files)"
+        )
     description = data.get("description", "")
     if not isinstance(description, str):
         raise InvalidModel(f"description={description!r}: expected a string")
@@ -238,6 +243,10 @@ def load_model(spec: str | Path = "paper") -> Model:
         raise InvalidModel(f"model={str(path)!r}: not valid TOML ({exc})") from None
     except (OSError, UnicodeDecodeError) as exc:
         raise InvalidModel(f"model={str(path)!r}: cannot be read ({exc.__class__.__name__})") from None
+    if not data:
+        raise InvalidModel(
+            f"model={str(path)!r}: the file is empty; expected a TOML model (name, parameters, options, bounds)"
+        )
     return model_from_mapping(data, source=str(path), default_name=path.stem)
 
 

@@ -6,6 +6,7 @@ decides a predicate. This module is the only place text becomes a number and bac
 
 from __future__ import annotations
 
+import math
 import re
 from fractions import Fraction
 from typing import TypeAlias
@@ -27,6 +28,9 @@ def normalize(value: Number) -> Number:
 def parse_number(text: object, *, name: str, allow_decimal: bool = False) -> Number:
     """Parse an integer, ``"p/q"`` (or, if allowed, a finite decimal such as ``"2.01"``) exactly.
 
+    A decimal means the number it writes: ``"3.3"`` is 33/10, never the binary float nearest to it.
+    A TOML float (``delta = 2.1``) is read back through its shortest decimal, so it is 21/10 too.
+
     Raises ``ValueError`` with a one-line message naming ``name=text``; callers wrap it in the
     error class of their boundary.
     """
@@ -34,6 +38,8 @@ def parse_number(text: object, *, name: str, allow_decimal: bool = False) -> Num
         raise ValueError(f"{name}={text!r}: expected an integer or a fraction like 5/2")
     if isinstance(text, int):
         return text
+    if isinstance(text, float) and allow_decimal and math.isfinite(text):
+        return normalize(Fraction(repr(text)))  # the shortest decimal that reads back as it: what was written
     if isinstance(text, str):
         if _EXACT.match(text):
             parts = text.replace(" ", "").split("/")

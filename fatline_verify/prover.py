@@ -17,8 +17,9 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import signal
 from collections.abc import Callable
-from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -204,6 +205,25 @@ def _found(doc: dict[str, Any], k: int, rounded: bool) -> str:
     return f"{what}, from an initial configuration of {k + 1} robots{note}"
 
 
+Task = tuple[str, str, "Rule | None"]
+"""One obligation: (lemma, form, rule); rule ``None`` is the global connectivity form."""
+
+
+def tasks_for(model: Model, lemmas: tuple[str, ...] = ob.LEMMAS) -> list[Task]:
+    """Every obligation ``prove`` decides for ``model`` and ``lemmas``, in results order."""
+    forms = ob.forms_for(model.options.scheduler)
+    tasks: list[Task] = [(lemma, form, rule) for lemma in lemmas for form in forms for rule in rules_for(model)]
+    if "connectivity" in lemmas:
+        tasks.append(("connectivity", "global", None))
+    return tasks
+
+
+def task_key(task: Task) -> str:
+    """``lemma/form-rule``: how results rows and witness files name an obligation."""
+    lemma, form, rule = task
+    return f"{lemma}/{form}-{rule.value if rule is not None else 'any'}"
+
+
 def prove(
     model: Model,
     lemmas: tuple[str, ...] = ob.LEMMAS,
@@ -213,57 +233,69 @@ def prove(
     out: Path | None = None,
     jobs: int | None = None,
     progress: Callable[[str], None] | None = None,
+    tasks: list[Task] | None = None,
+    on_result: Callable[[ProofResult], None] | None = None,
 ) -> list[ProofResult]:
-    """Every obligation of ``lemmas`` for ``model``; ``.smt2`` files under ``out`` if given.
+    """Every obligation of ``lemmas`` (or exactly ``tasks``) for ``model``; ``.smt2`` files under ``out``.
 
     Each obligation runs in a fresh process: z3's answers (and times) depend on the terms a process
     created before, so isolation makes every obligation's answer independent of the others and of
-    the order; it also spreads the obligations over the cores.
+    the order; it also spreads the obligations over the cores. ``on_result`` sees each result as it
+    finishes (so a caller can save it at once); the list returned is in task order. An interrupt
+    stops the workers at once and propagates.
     """
-    forms = ob.forms_for(model.options.scheduler)
-    tasks: list[tuple[str, str, Rule | None]] = [
-        (lemma, form, rule) for lemma in lemmas for form in forms for rule in rules_for(model)
-    ]
-    if "connectivity" in lemmas:
-        tasks.append(("connectivity", "global", None))
+    tasks = tasks_for(model, lemmas) if tasks is None else tasks
+    if not tasks:
+        return []
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
-    with _fresh_processes(workers) as pool:
-        futures = [
-            pool.submit(prove_one, model, lemma, form, rule, slots=slots, timeout=timeout, out=out)
-            if rule is not None
-            else pool.submit(prove_global, model, slots=slots, timeout=timeout, out=out)
-            for lemma, form, rule in tasks
-        ]
-        results = []
-        for (lemma, form, rule), fut in zip(tasks, futures, strict=True):
-            results.append(fut.result())
+    pool = _fresh_processes(workers)
+    try:
+        futures = {
+            (
+                pool.submit(prove_one, model, lemma, form, rule, slots=slots, timeout=timeout, out=out)
+                if rule is not None
+                else pool.submit(prove_global, model, slots=slots, timeout=timeout, out=out)
+            ): k
+            for k, (lemma, form, rule) in enumerate(tasks)
+        }
+        results: list[ProofResult | None] = [None] * len(tasks)
+        for fut in as_completed(futures):
+            k = futures[fut]
+            results[k] = fut.result()
+            if on_result:
+                on_result(results[k])  # type: ignore[arg-type]
             if progress:
-                progress(f"{lemma} {form} {rule.value if rule else ''}")
-    return results
+                progress(task_key(tasks[k]))
+    except BaseException:
+        _stop(pool)
+        raise
+    pool.shutdown()
+    return [r for r in results if r is not None]
+
+
+def _stop(pool: ProcessPoolExecutor) -> None:
+    """End a pool now: running obligations are killed, queued ones dropped."""
+    for proc in list((getattr(pool, "_processes", None) or {}).values()):
+        proc.terminate()
+    pool.shutdown(wait=False, cancel_futures=True)
 
 
 def _fresh_processes(workers: int) -> ProcessPoolExecutor:
-    """A pool whose every task runs in a new interpreter (z3's answers depend on a process's history)."""
-    return ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"), max_tasks_per_child=1)
+    """A pool whose every task runs in a new interpreter (z3's answers depend on a process's history).
+    Workers ignore SIGINT: an interrupt is the parent's to handle, and it stops them."""
+    return ProcessPoolExecutor(
+        workers,
+        mp_context=multiprocessing.get_context("spawn"),
+        max_tasks_per_child=1,
+        initializer=signal.signal,
+        initargs=(signal.SIGINT, signal.SIG_IGN),
+    )
 
 
 def isolated(fn: Callable[..., ProofResult], *args: Any, **kwargs: Any) -> ProofResult:
     """Run :func:`prove_one` or :func:`prove_global` in a fresh process, as ``fatline prove`` does."""
     with _fresh_processes(1) as pool:
         return pool.submit(fn, *args, **kwargs).result()
-
-
-def write_witnesses(model: Model, results: list[ProofResult], directory: Path) -> dict[str, str]:
-    """Write every counterexample as ``DIRECTORY/MODEL-prove-LEMMA-FORM-RULE.json``; paths by "lemma/form-rule"."""
-    from .trace import write_trace
-
-    paths = {}
-    for r in results:
-        if r.witness is not None:
-            path = directory / f"{model.name}-prove-{r.lemma}-{r.form}-{r.rule}.json"
-            write_trace(r.witness, path)
-            paths[f"{r.lemma}/{r.form}-{r.rule}"] = path.as_posix()
-    return paths
 
 
 def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
@@ -273,27 +305,4 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ob.ENCODING_VERSION)
 
 
-def results_json(model: Model, results: list[ProofResult], traces: dict[str, str]) -> dict[str, Any]:
-    """``proofs/<model>/results.json``."""
-    return {
-        "model": model.name,
-        "solver": ob.solver_version(),
-        "obligations": [
-            {
-                "lemma": r.lemma,
-                "form": r.form,
-                "rule": r.rule,
-                "verdict": r.verdict.value,
-                "slots": r.slots,
-                "any_size": r.any_size,
-                "seconds": round(r.seconds, 2),
-                "reason": r.reason,
-                "smt2": r.smt2,
-                "trace": traces.get(f"{r.lemma}/{r.form}-{r.rule}"),
-            }
-            for r in results
-        ],
-    }
-
-
-__all__ = ["ProofResult", "prove", "prove_one", "results_json", "rules_for"]
+__all__ = ["ProofResult", "Task", "prove", "prove_one", "rules_for", "task_key", "tasks_for"]

@@ -13,7 +13,7 @@ import networkx as nx
 from .config import Model
 from .errors import InvalidInput
 from .geometry import collinear, dist2, width_at_most
-from .numbers import Point, show_point
+from .numbers import Point, show, show_point
 from .options import Goal
 
 State = tuple[Point, ...]
@@ -50,7 +50,7 @@ def initial_problems(state: Sequence[Point], model: Model) -> list[str]:
     """Why ``state`` breaks the paper's initial condition (empty when it meets it).
 
     "Initially the robots are stationary and the mutual distance between two robots is at least
-    delta > 2 units" and "Initially, the graph G is assumed to be connected".
+    delta > 2 units" (distance exactly delta meets it) and "Initially, the graph G is assumed to be connected".
     """
     problems: list[str] = []
     for i in range(len(state)):
@@ -61,7 +61,7 @@ def initial_problems(state: Sequence[Point], model: Model) -> list[str]:
             if d2 < model.contact2:
                 problems.append(f"{where} overlap (centre distance below 2)")
             elif not model.initially_apart(d2):
-                problems.append(f"{where} are not more than delta apart")
+                problems.append(f"{where} are closer than delta")
     if not problems and not is_connected(state, model):
         problems.append("the visibility graph is not connected")
     return problems
@@ -74,4 +74,4 @@ def require_initial(state: Sequence[Point], model: Model) -> None:
     problems = initial_problems(state, model)
     if problems:
         delta = model.parameters.delta
-        raise InvalidInput(f"init: {problems[0]}; expected pairwise distance > delta={delta} and a connected swarm")
+        raise InvalidInput(f"init: {problems[0]}; expected pairwise distance >= delta={show(delta)} and a connected swarm")

@@ -160,18 +160,18 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
     return lines
 
 
-def prove_lines(model: Any, results: list[Any], traces: dict[str, str], out: Any) -> list[str]:
-    """The summary of ``fatline prove``."""
+def prove_lines(model: Any, results: list[dict[str, Any]], out: Any) -> list[str]:
+    """The summary of ``fatline prove``: one line per results row."""
     rows = [
         [
-            r.lemma,
-            r.form,
-            r.rule,
-            r.verdict.value,
-            str(r.slots),
-            f"{r.seconds:.1f}",
-            r.reason,
-            traces.get(f"{r.lemma}/{r.form}-{r.rule}", ""),
+            r["lemma"],
+            r["form"],
+            r["rule"],
+            r["verdict"],
+            str(r["slots"]),
+            f"{r['seconds']:.1f}",
+            r["reason"],
+            r.get("trace") or "",
         ]
         for r in results
     ]

@@ -102,8 +102,9 @@ def test_replay_reports_a_tampered_trace_with_exit_1(capsys, tmp_path):
 
 BAD_INIT = [
     ("0,0 1,0", "overlap"),
-    ("0,0 2,0", "not more than delta apart"),
-    ("0,0 21/10,0", "not more than delta apart"),
+    ("0,0 2,0", "closer than delta"),
+    ("0,0 209/100,0", "closer than delta"),
+    ("0,0 2.09,0", "closer than delta"),
     ("0,0 10,0", "not connected"),
     ("0,0 a,b", "init='a,b'"),
     ("0,0 3", "init='3'"),
@@ -114,11 +115,10 @@ BAD_INIT = [
 
 @pytest.mark.parametrize(("init", "fragment"), BAD_INIT)
 def test_bad_init(capsys, tmp_path, init, fragment):
-    keep = tmp_path / "keep.json"
-    keep.write_text("precious")
-    code, _, err = run_cli(capsys, "simulate", "--init", init, "--trace", str(keep))
+    trace = tmp_path / "run.json"
+    code, _, err = run_cli(capsys, "simulate", "--init", init, "--trace", str(trace))
     assert_one_line_error(code, err, fragment)
-    assert keep.read_text() == "precious"  # nothing overwritten
+    assert list(tmp_path.iterdir()) == []  # nothing written
 
 
 BAD_MODELS = [

@@ -53,8 +53,9 @@ def test_check_exit_0_when_everything_holds(capsys, tmp_path):
         (["--window", "9"], "window='9'"),
         (["--window", "0x5"], "window='0x5'"),
         (["--robots", "5", "--window", "200x200", "--engine", "scalar"], "does not pack into 63 bits"),
-        (["--robots", "3", "--window", "2x2"], "no initial configuration fits"),
-        (["--max-states", "0"], "max-states=0"),
+        (["--robots", "3", "--window", "2x2"], "window=2x2: no two robots fit"),
+        (["--robots", "4", "--window", "3x4"], "no initial configuration fits"),
+        (["--max-states", "0"], "max-states='0': expected a whole number"),
         (["--robots", "2", "--window", "200x3"], "at most 128x128"),
         (["nope.toml"], "model='nope.toml'"),
     ],
@@ -81,9 +82,9 @@ def test_help_states_exit_codes(capsys):
 @pytest.mark.parametrize(
     ("args", "fragment"),
     [
-        (["--timeout", "0"], "timeout=0.0"),
-        (["--slots", "0"], "slots=0"),
-        (["--lemma", "happiness"], "invalid choice"),
+        (["--timeout", "0"], "timeout='0': expected a positive, finite number"),
+        (["--slots", "0"], "slots='0': expected a whole number"),
+        (["--lemma", "happiness"], "lemma='happiness': expected one of no-collision, connectivity, all"),
     ],
 )
 def test_prove_bad_input(capsys, tmp_path, args, fragment):

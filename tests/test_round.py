@@ -126,9 +126,14 @@ def test_initial_condition():
     model = make_model()
     assert initial_problems(((0, 0), (3, 0)), model) == []
     assert "overlap" in initial_problems(((0, 0), (1, 0)), model)[0]
-    assert "delta" in initial_problems(((0, 0), (2, 0)), model)[0]  # touching: distance 2 is not > delta
-    assert "delta" in initial_problems(((0, 0), (Fr(21, 10), 0)), model)[0]  # exactly delta
+    assert "delta" in initial_problems(((0, 0), (2, 0)), model)[0]  # touching: distance 2 is below delta
+    # "the mutual distance between two robots is at least delta": exactly delta meets it, just below does not
+    assert initial_problems(((0, 0), (Fr(21, 10), 0)), model) == []
+    assert "delta" in initial_problems(((0, 0), (Fr(2099, 1000), 0)), model)[0]
     assert initial_problems(((0, 0), (Fr(211, 100), 0)), model) == []
+    on_lattice = make_model(q=10)  # delta * q = 21: squared lattice distance 441 is exactly delta
+    assert on_lattice.apart2 == 441
+    assert on_lattice.initially_apart(441) and not on_lattice.initially_apart(440)
     assert "not connected" in initial_problems(((0, 0), (5, 0)), model)[0]
 
 

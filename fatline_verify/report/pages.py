@@ -8,13 +8,11 @@ from __future__ import annotations
 
 import html
 import json
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from ..properties import Lemma
 from ..text import violation_line
-
-if TYPE_CHECKING:
-    from .build import ModelReport
+from .data import ModelReport
 
 RANK = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
 PROVER_LEMMAS = ("no-collision", "connectivity")

@@ -198,8 +198,11 @@ def build_global(model: Model, k: int, initial: bool = False) -> Obligation:
 
 
 def initial_condition(model: Model, slots: list[Slot]) -> list[z3.BoolRef]:
-    """The paper's initial condition on r and the present slots: pairwise distance > delta and a
-    connected visibility graph (reachability from r in at most k steps)."""
+    """The paper's initial condition on r and the present slots, for the counterexample search:
+    pairwise distance > delta (strictly inside "at least delta", so that a model rounded from
+    algebraic numbers stays initial; every configuration found meets the paper's condition) and a
+    connected visibility graph (reachability from r in at most k steps). No unsat answer of a search
+    with this condition is reported: the verdicts that claim a lemma come from obligations without it."""
     delta2 = real(Fraction(model.parameters.delta) ** 2)
     reach2 = real(view_reach(model) ** 2)
     out = []

@@ -1,0 +1,5 @@
+"""``python -m fatline_verify.cli``."""
+
+from . import run
+
+run()

@@ -1,0 +1,117 @@
+"""``fatline check``: every lemma on every small swarm and every activation set, within stated bounds."""
+
+from __future__ import annotations
+
+import argparse
+from dataclasses import replace
+from typing import Any
+
+from ..config import Model, Parameters, parse_robots, parse_window
+from ..errors import InvalidInput
+from ..outputs import Kind, claim_dir, claim_file, claim_files, write_json
+from ..progress import Progress
+from ..text import check_lines
+from .common import (
+    EXIT_FOUND,
+    EXIT_INCONCLUSIVE,
+    EXIT_INTERRUPTED,
+    EXIT_OK,
+    add_command,
+    add_force,
+    add_model_argument,
+    emit,
+    integer,
+    model_arg,
+    nonempty,
+)
+
+MAX_Q = 1000
+MAX_STATES_LIMIT = 10**10
+
+
+def with_q(model: Model, q: int) -> Model:
+    """The model on a lattice of ``q`` points per radius."""
+    p = model.parameters
+    return replace(model, parameters=Parameters(rad_v=p.rad_v, q=q, delta=p.delta))
+
+
+def stage_callback(bar: Progress) -> Any:
+    """The engine's ``progress(label, done, total)`` as stages of ``bar``."""
+
+    def tick(label: str, done: int, total: int) -> None:
+        if label != bar.label:
+            bar.stage(label)
+        if total:
+            bar.update(done, total)
+
+    return tick
+
+
+def cmd_check(args: argparse.Namespace) -> int:
+    from ..checker import CheckPlan, check_to_json, witness_paths, write_witnesses
+
+    model = model_arg(args.model)
+    robots = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else None
+    window = parse_window(args.window, error=InvalidInput) if args.window is not None else None
+    if args.q is not None:
+        model = with_q(model, args.q)
+    traces_dir = claim_dir(args.traces, name="traces")
+    json_path = claim_file(args.json, name="json", kind=Kind.CHECK, force=args.force) if args.json else None
+    plan = CheckPlan.of(model, robots, window, args.max_states, args.engine, args.after_violation)
+    claim_files(witness_paths(plan, traces_dir, f"{model.name}-"), name="traces", kind=Kind.TRACE, force=args.force)
+
+    done = []
+    interrupted = False
+    with Progress(enabled=not args.quiet, unit="states") as bar:
+        try:
+            for search in plan.searches(stage_callback(bar)):
+                done.append(search)
+        except KeyboardInterrupt:
+            interrupted = True
+    result = plan.result(done)
+    paths = write_witnesses(result, traces_dir, f"{model.name}-")
+    lines = check_lines(result, paths)
+    if interrupted:
+        finished = ", ".join(str(s.robots) for s in result.stats) or "none"
+        lines.append(f"INTERRUPTED: robot counts finished: {finished}; the rest was not searched")
+    if json_path is not None and (done or not interrupted):
+        write_json(json_path, check_to_json(result, paths))
+        lines.append(f"results written to {json_path}")
+    emit(lines)
+    if interrupted:
+        return EXIT_INTERRUPTED
+    if result.any_violated:
+        return EXIT_FOUND
+    return EXIT_INCONCLUSIVE if result.any_inconclusive else EXIT_OK
+
+
+def register(sub: Any) -> None:
+    p = add_command(sub, "check", "check every lemma on every small swarm and every activation set (bounded)")
+    add_model_argument(p)
+    p.add_argument("--robots", help="robot count or range, e.g. 3 or 2..4 (default: the model's bounds)")
+    p.add_argument("--window", help="WIDTHxHEIGHT lattice points, e.g. 9x9 (default: the model's bounds)")
+    p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")
+    p.add_argument(
+        "--max-states",
+        type=integer("max-states", 1, MAX_STATES_LIMIT),
+        help="stop a search after this many states (default: the model's)",
+    )
+    p.add_argument("--engine", choices=["fast", "scalar"], default="fast", help="exploration engine (default fast)")
+    p.add_argument(
+        "--after-violation",
+        choices=["stop", "continue"],
+        default="stop",
+        help="explore states reached through a violating round (default: stop)",
+    )
+    p.add_argument(
+        "--json", type=nonempty("json", "a file name for the JSON results"), help="write the results as JSON"
+    )
+    p.add_argument(
+        "--traces",
+        default="traces",
+        type=nonempty("traces", "a directory for witness traces"),
+        help="directory for witness traces (default: traces)",
+    )
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress")
+    add_force(p)
+    p.set_defaults(handler=cmd_check)

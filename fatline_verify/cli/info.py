@@ -1,0 +1,39 @@
+"""``fatline explain`` and ``fatline models``: the paper's open points and the shipped models."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from ..config import load_model, shipped_models
+from ..errors import InvalidInput
+from ..options import CATALOGUE
+from ..text import explain_lines
+from .common import EXIT_OK, add_command, emit, model_arg
+
+
+def cmd_explain(args: argparse.Namespace) -> int:
+    if args.option is not None and args.option not in CATALOGUE:
+        raise InvalidInput(f"option={args.option!r}: unknown option; expected one of {', '.join(CATALOGUE)}")
+    model = model_arg(args.model) if args.model is not None else None
+    emit(explain_lines(args.option, model))
+    return EXIT_OK
+
+
+def cmd_models(args: argparse.Namespace) -> int:
+    lines = []
+    for path in shipped_models():
+        model = load_model(path)
+        lines += [f"{path.stem}: {model.description}", f"  {model.describe()}"]
+    emit(lines)
+    return EXIT_OK
+
+
+def register(sub: Any) -> None:
+    p = add_command(sub, "explain", "print the paper's open points: quote, readings, default")
+    p.add_argument("option", nargs="?", help="one option (default: all)")
+    p.add_argument("--model", help="mark the readings this model file selects")
+    p.set_defaults(handler=cmd_explain)
+
+    p = add_command(sub, "models", "list the shipped model files")
+    p.set_defaults(handler=cmd_models)

@@ -1,0 +1,112 @@
+"""``fatline prove``: the collision and connectivity lemmas per rule with z3, for any swarm size."""
+
+from __future__ import annotations
+
+import argparse
+import os
+from typing import Any
+
+from ..outputs import Kind, child, claim_dir, claim_file, claim_files, write_json
+from ..progress import Progress
+from ..text import prove_lines
+from .common import (
+    EXIT_FOUND,
+    EXIT_INCONCLUSIVE,
+    EXIT_INTERRUPTED,
+    EXIT_OK,
+    add_command,
+    add_force,
+    add_model_argument,
+    emit,
+    integer,
+    model_arg,
+    nonempty,
+    seconds,
+)
+
+MAX_SLOTS = 8
+MAX_JOBS = 256
+
+
+def cmd_prove(args: argparse.Namespace) -> int:
+    from ..proof_results import ProofResults
+    from ..prover import prove, task_key, tasks_for
+    from ..smt.obligations import LEMMAS
+
+    model = model_arg(args.model)
+    lemmas = LEMMAS if args.lemma == "all" else (args.lemma,)
+    root = claim_dir(args.out, name="out")
+    out = claim_dir(child(root, model.name), name="out")
+    traces_dir = claim_dir(args.traces, name="traces") if args.traces is not None else out / "traces"
+    json_path = claim_file(args.json, name="json", kind=Kind.PROVE, force=args.force) if args.json else None
+    claim_files([out / "results.json"], name="out", kind=Kind.PROVE, force=args.force)
+    store = ProofResults(model, out, traces_dir, slots=args.slots, timeout=args.timeout)
+    tasks = tasks_for(model, lemmas)
+    claim_files(store.witness_paths(tasks), name="traces", kind=Kind.TRACE, force=args.force)
+
+    interrupted = False
+    with Progress(enabled=not args.quiet, unit="obligations") as bar:
+        bar.stage(f"{model.name}: proving", total=len(tasks))
+        try:
+            prove(
+                model,
+                slots=args.slots,
+                timeout=args.timeout,
+                out=out,
+                jobs=args.jobs,
+                tasks=tasks,
+                on_result=store.add,
+                progress=bar.step,
+            )
+        except KeyboardInterrupt:
+            interrupted = True
+    keys = [task_key(t) for t in tasks if store.fresh(t) is not None]
+    rows = store.ordered(keys)
+    lines = prove_lines(model, rows, out)
+    if interrupted:
+        lines.append(f"INTERRUPTED: {len(rows)} of {len(tasks)} obligations finished and saved in {store.path}")
+    if json_path is not None:
+        write_json(json_path, store.document(keys))
+    emit(lines)
+    if interrupted:
+        return EXIT_INTERRUPTED
+    if any(r["verdict"] == "VIOLATED" for r in rows):
+        return EXIT_FOUND
+    return EXIT_INCONCLUSIVE if any(r["verdict"] == "INCONCLUSIVE" for r in rows) else EXIT_OK
+
+
+def register(sub: Any) -> None:
+    p = add_command(
+        sub, "prove", "prove or refute the collision and connectivity lemmas per rule with z3, for any swarm size"
+    )
+    add_model_argument(p)
+    p.add_argument("--lemma", choices=["no-collision", "connectivity", "all"], default="all")
+    p.add_argument(
+        "--timeout", type=seconds("timeout"), default=10.0, help="solver seconds per obligation (default 10)"
+    )
+    p.add_argument(
+        "--slots", type=integer("slots", 1, MAX_SLOTS), default=3, help="symbolic robots besides r (default 3)"
+    )
+    p.add_argument(
+        "--jobs",
+        type=integer("jobs", 1, MAX_JOBS),
+        default=os.cpu_count() or 1,
+        help="obligations solved at once (default: the number of cores)",
+    )
+    p.add_argument(
+        "--out",
+        default="proofs",
+        type=nonempty("out", "a directory for proof artefacts"),
+        help="directory for .smt2 files and results.json (default: proofs)",
+    )
+    p.add_argument(
+        "--traces",
+        type=nonempty("traces", "a directory for counterexample traces"),
+        help="directory for counterexample traces (default: OUT/MODEL/traces)",
+    )
+    p.add_argument(
+        "--json", type=nonempty("json", "a file name for the JSON results"), help="also write the results as JSON"
+    )
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress")
+    add_force(p)
+    p.set_defaults(handler=cmd_prove)

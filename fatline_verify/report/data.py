@@ -1,0 +1,19 @@
+"""What the report knows of one model: the data every page is rendered from."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from ..config import Model
+
+
+@dataclass(frozen=True)
+class ModelReport:
+    """One model's results, as cached or freshly computed."""
+
+    model: Model
+    check: dict[str, Any]
+    prove: dict[str, Any]
+    traces: list[dict[str, Any]]
+    """Per trace: name, path (relative to the report root), source, lemma, summary, frame files, the document."""
