@@ -30,6 +30,10 @@ from .outputs import Kind, child
 from .properties import FLAG, SAFETY, Lemma, LemmaResult, StopReason, Verdict
 from .trace import approach_stuck
 
+ProgressFn = Callable[[str, int, int, str], None]
+"""``progress(stage, done, total, note)``: the stage (robot count and BFS level), states of the level's
+frontier expanded so far, the frontier's size, and a note (states found so far)."""
+
 MAX_LASSOS_TRIED = 20
 CHECKER_VERSION = 2
 """Bumped whenever the checker's semantics change (part of the report cache's fingerprint)."""
@@ -136,7 +140,7 @@ def check(
     max_states: int | None = None,
     engine: str = "fast",
     after_violation: str = "stop",
-    progress: Callable[[str, int, int], None] | None = None,
+    progress: ProgressFn | None = None,
 ) -> CheckResult:
     """Check every lemma for every robot count in ``robots`` (bounds default to the model's)."""
     plan = CheckPlan.of(model, robots, window, max_states, engine, after_violation)
@@ -179,7 +183,7 @@ class CheckPlan:
         return range(self.robots[0], self.robots[1] + 1)
 
     def searches(
-        self, progress: Callable[[str, int, int], None] | None = None
+        self, progress: ProgressFn | None = None
     ) -> Iterator[tuple[SearchStats, list[LemmaResult]]]:
         """One finished search per robot count, smallest first."""
         for n in self.counts:
@@ -202,20 +206,28 @@ def check_robots(
     max_states: int,
     engine_name: str = "fast",
     after_violation: str = "stop",
-    progress: Callable[[str, int, int], None] | None = None,
+    progress: ProgressFn | None = None,
 ) -> tuple[SearchStats, list[LemmaResult]]:
     """Explore every execution of ``n`` robots and give every lemma its verdict."""
     t0 = time.perf_counter()
     engine = make_engine(engine_name, model)
     if progress:
-        progress(f"n={n}: enumerating initial configurations in {window[0]}x{window[1]}", 0, 0)
+        progress(f"n={n}: enumerating initial configurations in {window[0]}x{window[1]}", 0, 0, "")
     initial = initial_array(n, window, model)
+    if progress:
+        progress(f"n={n}: {len(initial):,} initial configurations", len(initial), len(initial), "")
     if not len(initial):
         raise InvalidInput(
             f"robots={n} window={window[0]}x{window[1]}: no initial configuration fits (pairwise distance >= delta "
             "and connected); expected a larger window"
         )
-    tick = (lambda level, done, total: progress(f"n={n}: level {level}", done, total)) if progress else None
+    tick = None
+    if progress is not None:
+        report = progress
+
+        def tick(level: int, done: int, frontier: int, states: int) -> None:
+            report(f"n={n}: level {level}", done, frontier, f"{states:,} states")
+
     ex = explore(model, initial, window, engine, max_states=max_states, after_violation=after_violation, progress=tick)
     results = lemma_verdicts(ex)
     stats = SearchStats(

@@ -1,14 +1,15 @@
 """Progress on stderr, the one reporting layer for long runs (the engine only calls back).
 
 On a terminal: a tqdm bar with the stage, done/total, %, rate and ETA. Off a terminal (a pipe, a
-CI log): one plain line every few seconds and one when a stage ends, so a log shows the run moving
-without drowning in carriage returns. ``enabled=False`` (``-q``) prints nothing.
+CI log): one plain line every few seconds (stage, counts, %, rate, ETA, memory), so a log shows a
+long run moving without drowning in carriage returns, and a short run prints nothing. ``enabled=False`` (``-q``) prints nothing.
 """
 
 from __future__ import annotations
 
 import resource
 import sys
+import threading
 import time
 from typing import Any, TextIO
 
@@ -37,30 +38,36 @@ class Progress:
         self.tty = self.stream.isatty() if tty is None else tty
         self.bar: Any = None
         self.label = ""
-        self.started = self.last = time.monotonic()
+        self.started = time.monotonic()
         self.done = 0
         self.total: int | None = None
+        self.note = ""
+        self._stop = threading.Event()
+        self._ticker: threading.Thread | None = None
+        if enabled and not self.tty:
+            self._ticker = threading.Thread(target=self._tick, name="fatline-progress", daemon=True)
+            self._ticker.start()
 
     # --- the callbacks -----------------------------------------------------------------------------
     def stage(self, label: str, total: int | None = None) -> None:
         """Start a new stage (ends the previous one)."""
         if not self.enabled:
             return
-        self._end_stage()
-        self.label, self.total, self.done = label, total, 0
-        self.started = self.last = time.monotonic()
+        if self.bar is not None:
+            self.bar.close()
+            self.bar = None
+        self.label, self.total, self.done, self.note = label, total, 0, ""
+        self.started = time.monotonic()
         if self.tty:
             from tqdm import tqdm
 
             self.bar = tqdm(total=total, desc=label, unit=self.unit, file=self.stream, leave=False, dynamic_ncols=True)
-        else:
-            self._line(f"{label}: started" + (f", {total:,} {self.unit}".rstrip() if total else ""))
 
     def update(self, done: int, total: int | None = None, note: str = "") -> None:
         """``done`` of ``total`` units in the current stage; ``note`` is shown beside the counts."""
         if not self.enabled:
             return
-        self.done = done
+        self.done, self.note = done, note
         if total is not None:
             self.total = total
         if self.bar is not None:
@@ -70,32 +77,31 @@ class Progress:
             if note:
                 self.bar.set_postfix_str(note, refresh=False)
             self.bar.refresh()
-            return
-        now = time.monotonic()
-        if now - self.last >= self.every:
-            self.last = now
-            self._line(f"{self.label}: {self._counts()}" + (f", {note}" if note else ""))
 
-    def step(self, label: str, note: str = "") -> None:
+    def step(self, label: str) -> None:
         """One unit of the current stage done (``label`` names it)."""
-        if not self.enabled:
-            return
-        self.done += 1
-        if self.bar is not None:
-            self.bar.n = self.done
-            self.bar.set_postfix_str(label, refresh=False)
-            self.bar.refresh()
-        else:
-            self._line(f"{self.label}: {self._counts()}: {label}" + (f" {note}" if note else ""))
+        self.update(self.done + 1, note=label)
 
     def close(self) -> None:
-        self._end_stage()
+        self._stop.set()
+        if self._ticker is not None:
+            self._ticker.join(timeout=1)
+            self._ticker = None
+        if self.bar is not None:
+            self.bar.close()
+            self.bar = None
 
     def __enter__(self) -> Progress:
         return self
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+    def _tick(self) -> None:
+        """Off a terminal: one line every ``every`` seconds while work goes on (a short run prints none)."""
+        while not self._stop.wait(self.every):
+            if self.label:
+                self._line(f"{self.label}: {self._counts()}" + (f", {self.note}" if self.note else ""))
 
     # --- rendering ---------------------------------------------------------------------------------
     def _counts(self) -> str:
@@ -109,11 +115,3 @@ class Progress:
 
     def _line(self, text: str) -> None:
         print(f"fatline: {text}", file=self.stream, flush=True)
-
-    def _end_stage(self) -> None:
-        if self.bar is not None:
-            self.bar.close()
-            self.bar = None
-        elif self.label and not self.tty:
-            self._line(f"{self.label}: done, {self._counts()}")
-        self.label = ""

@@ -74,4 +74,6 @@ def require_initial(state: Sequence[Point], model: Model) -> None:
     problems = initial_problems(state, model)
     if problems:
         delta = model.parameters.delta
-        raise InvalidInput(f"init: {problems[0]}; expected pairwise distance >= delta={show(delta)} and a connected swarm")
+        raise InvalidInput(
+            f"init: {problems[0]}; expected pairwise distance >= delta={show(delta)} and a connected swarm"
+        )

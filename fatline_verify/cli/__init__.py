@@ -7,6 +7,7 @@ work starts; an interrupt exits 130 and keeps what was finished.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import sys
 from collections.abc import Sequence
@@ -54,10 +55,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_INTERRUPTED
     except BrokenPipeError:
         # the reader went away (``fatline ... | head``): not an error of ours
-        try:
+        with contextlib.suppress(OSError):
             sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - silence the flush at exit
-        except OSError:
-            pass
         return EXIT_OK
     except Exception as exc:  # a bug of the tool: one line, the traceback on request
         if os.environ.get("FATLINE_DEBUG"):

@@ -36,13 +36,13 @@ def with_q(model: Model, q: int) -> Model:
 
 
 def stage_callback(bar: Progress) -> Any:
-    """The engine's ``progress(label, done, total)`` as stages of ``bar``."""
+    """The engine's ``progress(label, done, total, note)`` as stages of ``bar``."""
 
-    def tick(label: str, done: int, total: int) -> None:
+    def tick(label: str, done: int, total: int, note: str) -> None:
         if label != bar.label:
             bar.stage(label)
         if total:
-            bar.update(done, total)
+            bar.update(done, total, note)
 
     return tick
 

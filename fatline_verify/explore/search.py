@@ -89,7 +89,7 @@ def explore(
     max_states: int = 1_000_000,
     after_violation: str = "stop",
     batch: int = 50_000,
-    progress: Callable[[int, int, int], None] | None = None,
+    progress: Callable[[int, int, int, int], None] | None = None,
 ) -> Exploration:
     """Breadth-first search from every state of ``initial`` (canonical, sorted by key)."""
     m0, n, _ = initial.shape
@@ -128,7 +128,7 @@ def explore(
             lvl_flags.append(ex.flags)
             lvl_fits.append(fits)
             if progress:
-                progress(level, start + len(chunk), total)
+                progress(level, start + len(chunk), len(frontier), total)
         src, mask, key = np.concatenate(lvl_src), np.concatenate(lvl_mask), np.concatenate(lvl_key)
         flags, fits = np.concatenate(lvl_flags), np.concatenate(lvl_fits)
         e_src.append(src)
