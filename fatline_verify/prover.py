@@ -16,10 +16,10 @@ rule breaks the lemma (:mod:`fatline_verify.smt.obligations`). Answers become ve
 from __future__ import annotations
 
 import multiprocessing
+import multiprocessing.connection
 import os
 import signal
 from collections.abc import Callable
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -248,54 +248,87 @@ def prove(
     if not tasks:
         return []
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
-    pool = _fresh_processes(workers)
-    try:
-        futures = {
-            (
-                pool.submit(prove_one, model, lemma, form, rule, slots=slots, timeout=timeout, out=out)
-                if rule is not None
-                else pool.submit(prove_global, model, slots=slots, timeout=timeout, out=out)
-            ): k
-            for k, (lemma, form, rule) in enumerate(tasks)
-        }
-        results: list[ProofResult | None] = [None] * len(tasks)
-        for fut in as_completed(futures):
-            k = futures[fut]
-            results[k] = fut.result()
-            if on_result:
-                on_result(results[k])  # type: ignore[arg-type]
-            if progress:
-                progress(task_key(tasks[k]))
-    except BaseException:
-        _stop(pool)
-        raise
-    pool.shutdown()
+    calls = [
+        (prove_one, (model, lemma, form, rule), {"slots": slots, "timeout": timeout, "out": out})
+        if rule is not None
+        else (prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out})
+        for lemma, form, rule in tasks
+    ]
+    results: list[ProofResult | None] = [None] * len(tasks)
+
+    def done(k: int, result: ProofResult) -> None:
+        results[k] = result
+        if on_result:
+            on_result(result)
+        if progress:
+            progress(task_key(tasks[k]))
+
+    run_fresh(calls, workers, done)
     return [r for r in results if r is not None]
 
 
-def _stop(pool: ProcessPoolExecutor) -> None:
-    """End a pool now: running obligations are killed, queued ones dropped."""
-    for proc in list((getattr(pool, "_processes", None) or {}).values()):
-        proc.terminate()
-    pool.shutdown(wait=False, cancel_futures=True)
+Call = tuple[Callable[..., Any], tuple[Any, ...], dict[str, Any]]
 
 
-def _fresh_processes(workers: int) -> ProcessPoolExecutor:
-    """A pool whose every task runs in a new interpreter (z3's answers depend on a process's history).
-    Workers ignore SIGINT: an interrupt is the parent's to handle, and it stops them."""
-    return ProcessPoolExecutor(
-        workers,
-        mp_context=multiprocessing.get_context("spawn"),
-        max_tasks_per_child=1,
-        initializer=signal.signal,
-        initargs=(signal.SIGINT, signal.SIG_IGN),
-    )
+def _child(conn: Any, fn: Callable[..., Any], args: tuple[Any, ...], kwargs: dict[str, Any]) -> None:
+    """A fresh process's one task: its answer (or its exception) goes back through ``conn``.
+    SIGINT is ignored: an interrupt is the parent's to handle, and the parent kills the workers."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        answer: tuple[bool, Any] = (True, fn(*args, **kwargs))
+    except Exception as exc:  # sent to the parent, which raises it there
+        answer = (False, exc)
+    try:
+        conn.send(answer)
+    except Exception as exc:  # an unpicklable answer or exception
+        conn.send((False, RuntimeError(f"{fn.__name__}: {exc.__class__.__name__}: {exc}")))
+    conn.close()
+
+
+def run_fresh(calls: list[Call], workers: int, done: Callable[[int, Any], None]) -> None:
+    """Run each call in a new interpreter (spawn), at most ``workers`` at once; ``done(k, answer)``
+    as each finishes. z3's answers depend on the terms a process created before, so one process per
+    call makes every answer independent of the others and of the order.
+
+    An interrupt (or any error) kills every running worker at once and propagates: nothing waits for
+    a solver to finish. (``ProcessPoolExecutor`` cannot promise that: after ``shutdown`` its manager
+    thread waits for work it has already queued, and interpreter exit waits for the manager.)
+    """
+    ctx = multiprocessing.get_context("spawn")
+    pending = list(enumerate(calls))[::-1]
+    running: dict[Any, tuple[int, Any]] = {}
+    try:
+        while pending or running:
+            while pending and len(running) < workers:
+                k, (fn, args, kwargs) = pending.pop()
+                receive, send = ctx.Pipe(duplex=False)
+                proc = ctx.Process(target=_child, args=(send, fn, args, kwargs), daemon=True)
+                proc.start()
+                send.close()
+                running[receive] = (k, proc)
+            for conn in multiprocessing.connection.wait(list(running)):
+                k, proc = running.pop(conn)
+                try:
+                    ok, answer = conn.recv()
+                except EOFError:
+                    ok, answer = False, RuntimeError(f"a worker process died (exit code {proc.exitcode})")
+                conn.close()
+                proc.join()
+                if not ok:
+                    raise answer
+                done(k, answer)
+    finally:
+        for conn, (_, proc) in running.items():
+            proc.kill()
+            proc.join(timeout=5)
+            conn.close()
 
 
 def isolated(fn: Callable[..., ProofResult], *args: Any, **kwargs: Any) -> ProofResult:
     """Run :func:`prove_one` or :func:`prove_global` in a fresh process, as ``fatline prove`` does."""
-    with _fresh_processes(1) as pool:
-        return pool.submit(fn, *args, **kwargs).result()
+    answers: list[ProofResult] = []
+    run_fresh([(fn, args, kwargs)], 1, lambda _, answer: answers.append(answer))
+    return answers[0]
 
 
 def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:

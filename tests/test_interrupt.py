@@ -1,0 +1,79 @@
+"""Ctrl-C: the command stops at once, exits 130, and keeps what it finished."""
+
+from __future__ import annotations
+
+import json
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _start(*argv: str, cwd: Path) -> subprocess.Popen[str]:
+    return subprocess.Popen(
+        [sys.executable, "-m", "fatline_verify.cli", *argv],
+        cwd=cwd,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+
+
+def _interrupt(proc: subprocess.Popen[str]) -> tuple[int, str, str, float]:
+    t0 = time.monotonic()
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=30)
+    return proc.returncode, out, err, time.monotonic() - t0
+
+
+def _wait_for(predicate, proc: subprocess.Popen[str], limit: float = 120.0) -> None:
+    t0 = time.monotonic()
+    while not predicate():
+        assert proc.poll() is None, proc.communicate()
+        assert time.monotonic() - t0 < limit, "the run never got that far"
+        time.sleep(0.1)
+
+
+def test_check_interrupted_keeps_the_finished_robot_counts(tmp_path):
+    out = tmp_path / "check.json"
+    proc = _start("check", "--robots", "2..6", "--json", str(out), "--traces", str(tmp_path / "t"), cwd=tmp_path)
+    # n = 2..4 take about a second; n = 6 takes minutes, so the interrupt lands in n = 5 or 6.
+    time.sleep(6)
+    assert proc.poll() is None, proc.communicate()
+    code, stdout, err, seconds = _interrupt(proc)
+    assert code == 130, err
+    assert seconds < 3
+    assert "interrupted" in err.lower() or "INTERRUPTED" in stdout
+    data = json.loads(out.read_text())
+    assert data["format"] == "fatline-check" and data["complete"] is False
+    finished = [s["robots"] for s in data["searches"]]
+    assert finished[:3] == [2, 3, 4] and 6 not in finished
+    assert {row["robots"] for row in data["lemmas"]} == set(finished)
+    for row in data["lemmas"]:
+        if row["trace"]:
+            assert Path(row["trace"]).is_file()
+
+
+def test_prove_interrupted_saves_every_finished_obligation(tmp_path):
+    results = tmp_path / "p" / "paper" / "results.json"
+
+    def rows() -> int:
+        try:
+            return len(json.loads(results.read_text())["obligations"])
+        except (OSError, ValueError, KeyError):
+            return 0
+
+    proc = _start("prove", "paper", "--out", str(tmp_path / "p"), "--timeout", "2", "--jobs", "1", "-q", cwd=tmp_path)
+    _wait_for(lambda: rows() >= 1, proc)
+    code, stdout, err, seconds = _interrupt(proc)
+    assert code == 130, err
+    assert seconds < 3
+    saved = json.loads(results.read_text())
+    assert saved["format"] == "fatline-prove"
+    assert 1 <= len(saved["obligations"]) < 21
+    assert f"{len(saved['obligations'])} of 21 obligations finished" in stdout
+    assert "Traceback" not in err
+    assert not list((tmp_path / "p").rglob("*.tmp"))  # no half-written file left behind

@@ -1,0 +1,111 @@
+"""Partial runs merge into what exists: no row, model or trace they did not recompute is dropped."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+from fatline_verify import prover
+from fatline_verify.cli import main
+from fatline_verify.config import load_model, shipped_models
+from fatline_verify.proof_results import ProofResults
+from fatline_verify.properties import Verdict
+from fatline_verify.prover import ProofResult
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _fake_prove(verdict: Verdict):
+    """A stand-in for the solver: every obligation asked for gets ``verdict`` at once."""
+
+    def fake(model, lemmas=(), *, slots, timeout, out, jobs=None, progress=None, tasks=None, on_result=None):
+        tasks = prover.tasks_for(model, lemmas) if tasks is None else tasks
+        results = []
+        for lemma, form, rule in tasks:
+            r = ProofResult(lemma, form, rule.value if rule else "any", verdict, slots, False, 0.0, "fake", "")
+            results.append(r)
+            if on_result:
+                on_result(r)
+            if progress:
+                progress(f"{lemma} {form}")
+        return results
+
+    return fake
+
+
+def _rows(path: Path) -> dict[str, dict]:
+    data = json.loads(path.read_text())
+    return {f"{r['lemma']}/{r['form']}-{r['rule']}": r for r in data["obligations"]}
+
+
+def test_prove_one_lemma_keeps_the_other_lemmas_rows(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(ROOT)
+    out = tmp_path / "proofs"
+    shutil.copytree(ROOT / "proofs" / "paper", out / "paper")
+    before = _rows(out / "paper" / "results.json")
+    monkeypatch.setattr(prover, "prove", _fake_prove(Verdict.INCONCLUSIVE))
+    code = main(["prove", "paper", "--lemma", "no-collision", "--out", str(out), "-q"])
+    assert code == 3
+    after = _rows(out / "paper" / "results.json")
+    assert after.keys() == before.keys()  # 21 rows: none dropped
+    for key, row in after.items():
+        if key.startswith("no-collision/"):
+            assert row["reason"] == "fake"  # recomputed
+        else:
+            assert row == {"fingerprint": row["fingerprint"], **before[key]}  # kept as it was
+    printed = capsys.readouterr().out.splitlines()
+    assert sum(line.startswith("no-collision ") for line in printed) == 10  # the run's own rows only
+    assert not any(line.startswith("connectivity ") for line in printed)
+
+
+def test_store_saves_each_result_and_keeps_foreign_rows(tmp_path):
+    model = load_model("paper")
+    (tmp_path / "results.json").write_text(
+        json.dumps(
+            {
+                "format": "fatline-prove",
+                "model": "paper",
+                "solver": "z3",
+                "obligations": [
+                    {"lemma": "no-collision", "form": "three-movers", "rule": "x", "verdict": "VIOLATED", "trace": None}
+                ],
+            }
+        )
+    )
+    store = ProofResults(model, tmp_path, tmp_path / "traces", slots=3, timeout=10.0)
+    task = prover.tasks_for(model)[0]
+    assert store.fresh(task) is None
+    store.add(ProofResult("no-collision", "one-mover", task[2].value, Verdict.PROVED, 3, True, 1.0, "unsat", ""))
+    saved = _rows(tmp_path / "results.json")  # written at once, not at the end of a run
+    assert saved["no-collision/one-mover-scenario-1"]["verdict"] == "PROVED"
+    assert "no-collision/three-movers-x" in saved
+    assert store.fresh(task) is not None
+    assert ProofResults(model, tmp_path, tmp_path / "traces", slots=3, timeout=5.0).fresh(task) is None
+
+
+def test_report_one_model_keeps_the_matrix_and_the_corpus(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(ROOT)
+    out, proofs = tmp_path / "reports", tmp_path / "proofs"
+    for model in shipped_models():
+        (out / model.stem).mkdir(parents=True)
+        shutil.copyfile(ROOT / "reports" / model.stem / "check.json", out / model.stem / "check.json")
+        for svg in (ROOT / "reports" / model.stem / "img").glob("*.svg"):
+            (out / model.stem / "img").mkdir(exist_ok=True)
+            shutil.copyfile(svg, out / model.stem / "img" / svg.name)
+        shutil.copytree(ROOT / "proofs" / model.stem, proofs / model.stem)
+    shutil.copytree(ROOT / "reports" / "traces", out / "traces")
+    corpus_before = sorted(p.name for p in (out / "traces").iterdir())
+    stray = out / "traces" / "paper-centralized-prove-from-an-earlier-run.json"
+    shutil.copyfile(ROOT / "reports" / "traces" / "paper-centralized-check-progress-n2.json", stray)
+    monkeypatch.setattr(prover, "prove", _fake_prove(Verdict.INCONCLUSIVE))  # any recomputation is visible
+
+    code = main(["report", "paper-centralized", "--out", str(out), "--proofs", str(proofs), "-q"])
+    assert code == 0
+    matrix = (out / "README.md").read_text()
+    for model in shipped_models():
+        assert f"[{model.stem}]({model.stem}/README.md)" in matrix  # every model keeps its row
+    assert all(r["reason"] != "fake" for r in _rows(proofs / "paper-centralized" / "results.json").values())
+    assert stray.exists()
+    assert set(corpus_before) <= {p.name for p in (out / "traces").iterdir()}
+    assert "kept from earlier runs in the matrix" in capsys.readouterr().out
