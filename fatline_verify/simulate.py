@@ -1,4 +1,5 @@
-"""Running a swarm: a seeded, fair random scheduler and the loop that stops at the first outcome.
+"""Running a swarm: a seeded, fair random scheduler and the loop that stops at the first outcome;
+or an explicit schedule (:func:`parse_schedule`, :func:`play_schedule`) played round by round.
 
 Fairness: under ``ssync`` each enabled robot is activated with probability 1/2 (at least one a
 round), and one that has been enabled but idle for ``n`` rounds in a row is activated for sure; under
@@ -9,12 +10,13 @@ robot waits forever, as the paper's "the robots do not stay idle for infinite ti
 from __future__ import annotations
 
 import random
+import re
 from dataclasses import dataclass, field
 from enum import StrEnum
 
 from .algorithm import Decision
 from .config import Model
-from .errors import Unsupported
+from .errors import InvalidInput, Unsupported
 from .options import Scheduler
 from .schedule import RoundResult, decide_all, enabled, play_round
 from .swarm import State, is_goal, require_initial
@@ -120,3 +122,107 @@ def simulate(
         rounds.append(last)
         state = last.after
     return Run(model, initial, tuple(rounds), outcome)
+
+
+# --- explicit schedules -------------------------------------------------------------------------------
+
+MAX_SCHEDULE_ROUNDS = 1_000_000
+
+_INDEX = re.compile(r"[0-9]+")
+
+
+def _schedule_expected(n: int) -> str:
+    robots = "0" if n == 1 else f"0..{n - 1}"
+    return (
+        f"expected rounds separated by ';', each 'all' or robot indices {robots} (in --init order) "
+        "separated by ',', e.g. '0;1,2;all'"
+    )
+
+
+def _scheduler_allows(kind: Scheduler, active: tuple[int, ...], n: int) -> str | None:
+    """Why ``kind`` forbids activating ``active`` in one round, or ``None`` when it allows it."""
+    if kind is Scheduler.CENTRALIZED and len(active) != 1:
+        shown = ",".join(map(str, active))
+        return (
+            f"activates {len(active)} robots ({shown}); expected exactly one robot per round under "
+            "scheduler=centralized"
+        )
+    if kind is Scheduler.FSYNC and len(active) != n:
+        shown = ",".join(map(str, active))
+        return f"activates robots {shown} of {n}; expected every robot ('all') in every round under scheduler=fsync"
+    return None
+
+
+def parse_schedule(text: str, n: int, scheduler: Scheduler) -> list[tuple[int, ...]]:
+    """The activation sets of ``text`` (``"0;1,2;all"``) for ``n`` robots, each checked against
+    ``scheduler``: ``centralized`` one robot a round, ``fsync`` every robot, ``ssync`` any non-empty set.
+
+    Robot indices are positions in the initial configuration (0-based); ``all`` is every robot.
+    Activating a robot that would not move is allowed (it stays where it is). Anything else is
+    :class:`InvalidInput` naming the text, the round (1-based) and what was expected.
+    """
+    if scheduler is Scheduler.ASYNC:
+        raise Unsupported("scheduler='async': not implemented yet; expected one of ssync, fsync, centralized")
+    expected = _schedule_expected(n)
+
+    def bad(why: str) -> InvalidInput:
+        return InvalidInput(f"schedule={text!r}: {why}; {expected}")
+
+    if not text.strip():
+        raise bad("no rounds")
+    parts = text.split(";")
+    if len(parts) > MAX_SCHEDULE_ROUNDS:
+        raise bad(f"{len(parts)} rounds, more than {MAX_SCHEDULE_ROUNDS}")
+    rounds: list[tuple[int, ...]] = []
+    for k, part in enumerate(parts, start=1):
+        tokens = [t.strip() for t in part.split(",")]
+        if tokens == [""]:
+            raise bad(f"round {k} is empty")
+        if any(t.lower() == "all" for t in tokens):
+            if len(tokens) != 1:
+                raise bad(f"round {k} mixes 'all' with other robots ({part.strip()!r})")
+            active = tuple(range(n))
+        else:
+            seen: list[int] = []
+            for t in tokens:
+                if not t:
+                    raise bad(f"round {k} has an empty robot index ({part.strip()!r})")
+                if not _INDEX.fullmatch(t):
+                    raise bad(f"round {k}: {t!r} is not a robot index")
+                i = int(t)
+                if i >= n:
+                    raise bad(f"round {k}: robot {i} does not exist (there are {n} robots)")
+                if i in seen:
+                    raise bad(f"round {k} names robot {i} twice")
+                seen.append(i)
+            active = tuple(sorted(seen))
+        why = _scheduler_allows(scheduler, active, n)
+        if why is not None:
+            raise InvalidInput(f"schedule={text!r}: round {k} {why}")
+        rounds.append(active)
+    return rounds
+
+
+def play_schedule(initial: State, model: Model, rounds: list[tuple[int, ...]] | tuple[tuple[int, ...], ...]) -> Run:
+    """Play exactly the activation sets ``rounds`` from ``initial``, one per round.
+
+    Only a violating round ends the run early (as in every trace); past the goal or a deadlock the
+    remaining rounds are still played (a robot that is activated but not enabled stays). The
+    outcome is judged on the last state, as :func:`fatline_verify.trace.replay` judges it:
+    ``VIOLATION``, ``GOAL``, ``DEADLOCK``, or else ``ROUND_LIMIT`` (the schedule ran out).
+    """
+    require_initial(initial, model)
+    n = len(initial)
+    for k, active in enumerate(rounds, start=1):
+        if not active or any(not 0 <= i < n for i in active) or len(set(active)) != len(active):
+            raise InvalidInput(f"schedule: round {k} activates {list(active)}; {_schedule_expected(n)}")
+    state, last = initial, None
+    played: list[RoundResult] = []
+    for active in rounds:
+        last = play_round(state, active, model)
+        played.append(last)
+        state = last.after
+        if last.violations:
+            break
+    outcome = outcome_after(state, last, model) or Outcome.ROUND_LIMIT
+    return Run(model, initial, tuple(played), outcome)

@@ -1,4 +1,11 @@
-"""``fatline replay``: recompute traces from their initial positions and compare every recorded value."""
+"""``fatline replay``: recompute traces from their initial positions and compare every recorded value.
+
+Under the trace's own model (or ``--model`` with the same readings and parameters) any difference
+means the file was changed: "recorded value differs". Under another model ``M`` a difference is a
+finding about ``M``: "the counterexample is gone under M" when the recorded violation (or, for a
+trace without one, the recorded outcome) no longer happens, else "still VIOLATED (lemma) under M;
+recorded values differ: ...". Both are exit 1.
+"""
 
 from __future__ import annotations
 
@@ -7,11 +14,61 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from ..errors import FatlineError, TraceDidNotReproduce
+from ..config import Model
+from ..errors import FatlineError
 from ..outputs import Kind, claim_dir, claim_files, write_text
+from ..simulate import Run
 from ..text import trace_lines
-from ..trace import check_replay, load_trace
+from ..trace import differences, load_trace, replay, run_to_json, trace_model
 from .common import EXIT_BAD, EXIT_FOUND, EXIT_OK, add_command, add_force, emit, error_line, model_arg
+
+
+def _same_model(doc: dict[str, Any], model: Model) -> bool:
+    """Whether ``model`` has the trace's own readings and parameters (its name may differ)."""
+    try:
+        own = trace_model(doc)
+    except FatlineError:
+        return False
+    return own.options == model.options and own.parameters == model.parameters
+
+
+def _first(diffs: list[str]) -> str:
+    more = f" (and {len(diffs) - 1} more)" if len(diffs) > 1 else ""
+    return f"{diffs[0]}{more}"
+
+
+def _what_happens(again: dict[str, Any]) -> str:
+    """The replayed outcome and every round that violates a lemma, for the "gone" message."""
+    violating = [
+        f"round {k} violates {', '.join(dict.fromkeys(v['property'] for v in r['violations']))}"
+        for k, r in enumerate(again["rounds"], start=1)
+        if r["violations"]
+    ]
+    return f"replayed outcome {again['outcome']}; " + (
+        "; ".join(violating) if violating else "no round violates a lemma"
+    )
+
+
+def not_reproduced(doc: dict[str, Any], run: Run, diffs: list[str], other: Model | None) -> str:
+    """Why the trace did not reproduce: a changed value under its own model (``other`` is ``None``),
+    or under another model whether its counterexample (or outcome) is gone or still there."""
+    if other is None:
+        return _first(diffs)
+    name = other.name
+    recorded = doc.get("violation")
+    again = run_to_json(run, focus=recorded["property"] if recorded else None)
+    if recorded:
+        if again["violation"] is None:
+            k = recorded.get("round")
+            where = "" if k is None else f" in round {k}" if k else " in the initial configuration"
+            return (
+                f"the counterexample is gone under {name}: {recorded['property']} is no longer violated{where} "
+                f"({_what_happens(again)})"
+            )
+        return f"still VIOLATED ({recorded['property']}) under {name}; recorded values differ: {_first(diffs)}"
+    if again["outcome"] != doc["outcome"]:
+        return f"the recorded outcome {doc['outcome']} is gone under {name} ({_what_happens(again)})"
+    return f"still {doc['outcome']} under {name}; recorded values differ: {_first(diffs)}"
 
 
 def cmd_replay(args: argparse.Namespace) -> int:
@@ -21,18 +78,21 @@ def cmd_replay(args: argparse.Namespace) -> int:
     for name in args.traces:
         try:
             doc = load_trace(name)
-            run = check_replay(doc, override)
-        except TraceDidNotReproduce as exc:
-            emit([f"{name}: DID NOT REPRODUCE: {exc}"])
-            worst = max(worst, EXIT_FOUND)
-            continue
+            run = replay(doc, override)
+            diffs = differences(doc, run)
         except FatlineError as exc:
             print(error_line(str(exc)), file=sys.stderr)
             worst = EXIT_BAD
             continue
+        other = override if override is not None and not _same_model(doc, override) else None
+        if diffs:
+            emit([f"{name}: DID NOT REPRODUCE: {not_reproduced(doc, run, diffs, other)}"])
+            worst = max(worst, EXIT_FOUND)
+            continue
         v = doc["violation"]
         what = f"{doc['outcome']}" + (f" ({v['property']} in round {v['round']})" if v else "")
-        lines = [f"{name}: reproduces: {len(run.rounds)} rounds, {what}"]
+        under = f" under {override.name}" if override is not None else ""
+        lines = [f"{name}: reproduces{under}: {len(run.rounds)} rounds, {what}"]
         if args.verbose:
             lines += ["  " + line for line in trace_lines(doc)]
         if picture is not None:
@@ -51,7 +111,11 @@ def cmd_replay(args: argparse.Namespace) -> int:
 def register(sub: Any) -> None:
     p = add_command(sub, "replay", "recompute traces from their initial positions and compare every recorded value")
     p.add_argument("traces", nargs="+", metavar="TRACE")
-    p.add_argument("--model", help="replay under this model instead of the trace's own")
+    p.add_argument(
+        "--model",
+        help="replay under this model instead of the trace's own: a trace that does not reproduce says whether "
+        "its counterexample is gone under it or still there with other values",
+    )
     p.add_argument("-v", "--verbose", action="store_true", help="print every round")
     p.add_argument("--picture", metavar="DIR", help="write one SVG picture per round of each trace into DIR")
     add_force(p)

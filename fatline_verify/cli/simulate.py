@@ -1,13 +1,14 @@
-"""``fatline simulate``: one swarm under a seeded, fair random scheduler."""
+"""``fatline simulate``: one swarm under a seeded, fair random scheduler, or an explicit schedule."""
 
 from __future__ import annotations
 
 import argparse
 from typing import Any
 
+from ..errors import InvalidInput
 from ..options import Scheduler
 from ..outputs import Kind, claim_file
-from ..simulate import Outcome, simulate
+from ..simulate import Outcome, parse_schedule, play_schedule, simulate
 from ..text import trace_lines
 from ..trace import run_to_json, write_trace
 from .common import (
@@ -23,17 +24,47 @@ from .common import (
 )
 
 MAX_ROUNDS = 1_000_000
+DEFAULT_SEED = 0
+DEFAULT_ROUNDS = 100
+
+
+def _random_only(args: argparse.Namespace) -> None:
+    """``--seed`` and ``--rounds`` steer the random scheduler; with ``--schedule`` they would be
+    silently meaningless, so combining them is bad input."""
+    for flag, value in (("seed", args.seed), ("rounds", args.rounds)):
+        if value is not None:
+            raise InvalidInput(
+                f"{flag}='{value}': has no effect with --schedule (the schedule fixes every round); "
+                f"expected --{flag} or --schedule, not both"
+            )
 
 
 def cmd_simulate(args: argparse.Namespace) -> int:
+    if args.schedule is not None:
+        _random_only(args)
     trace = claim_file(args.trace, name="trace", kind=Kind.TRACE, force=args.force) if args.trace is not None else None
     model = model_arg(args.model)
     initial = parse_init(args.init, model)
     scheduler = Scheduler(args.scheduler) if args.scheduler else model.options.scheduler
-    run = simulate(initial, model, scheduler=scheduler, seed=args.seed, max_rounds=args.rounds)
-    doc = run_to_json(run, {"tool": "fatline simulate", "scheduler": str(scheduler), "seed": args.seed})
-    lines = [f"model {model.describe()}", f"scheduler {scheduler}, seed {args.seed}, at most {args.rounds} rounds"]
+    lines = [f"model {model.describe()}"]
+    if args.schedule is not None:
+        rounds = parse_schedule(args.schedule, len(initial), scheduler)
+        run = play_schedule(initial, model, rounds)
+        origin = {"tool": "fatline simulate", "scheduler": str(scheduler), "schedule": args.schedule}
+        lines.append(
+            f"scheduler {scheduler}, schedule {args.schedule!r}: {len(rounds)} round{'s' if len(rounds) != 1 else ''}"
+        )
+    else:
+        seed = DEFAULT_SEED if args.seed is None else args.seed
+        max_rounds = DEFAULT_ROUNDS if args.rounds is None else args.rounds
+        run = simulate(initial, model, scheduler=scheduler, seed=seed, max_rounds=max_rounds)
+        origin = {"tool": "fatline simulate", "scheduler": str(scheduler), "seed": seed}
+        lines.append(f"scheduler {scheduler}, seed {seed}, at most {max_rounds} rounds")
+    doc = run_to_json(run, origin)
     lines += trace_lines(doc)
+    if args.schedule is not None and len(run.rounds) < len(rounds):
+        rest = len(rounds) - len(run.rounds)
+        lines.append(f"the remaining {rest} scheduled round{'s' if rest != 1 else ''} were not played")
     if trace is not None:
         write_trace(doc, trace)
         lines.append(f"trace written to {trace}")
@@ -42,18 +73,39 @@ def cmd_simulate(args: argparse.Namespace) -> int:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "simulate", "run one swarm under a seeded, fair random scheduler")
+    p = add_command(
+        sub, "simulate", "run one swarm under a seeded, fair random scheduler, or play an explicit schedule"
+    )
     add_model_argument(p)
     p.add_argument(
         "--init", required=True, help='initial centres in robot radii, e.g. "0,0 3,0 5/2,3" or "0,0 3.3,-2.2"'
     )
-    p.add_argument("--scheduler", choices=[s.value for s in Scheduler], help="override the model's scheduler")
-    p.add_argument("--seed", type=integer("seed", 0, 2**63 - 1), default=0, help="random seed (default 0)")
+    p.add_argument(
+        "--scheduler",
+        choices=[s.value for s in Scheduler],
+        help="override the model's scheduler (with --schedule: the rule every round is checked against)",
+    )
+    p.add_argument(
+        "--schedule",
+        metavar="ROUNDS",
+        help="play exactly these activation sets, one per round, instead of the random scheduler: rounds "
+        "separated by ';', robots (indices in --init order, from 0) by ',', 'all' for every robot, e.g. "
+        '"0;1,2;all". An activated robot that would not move stays. Checked against the scheduler before '
+        "anything runs: centralized one robot a round, fsync every robot, ssync any non-empty set. The run "
+        "stops early only at a violation; past the goal or a deadlock the remaining rounds are still "
+        "played. Not combinable with --seed or --rounds",
+    )
+    p.add_argument(
+        "--seed",
+        type=integer("seed", 0, 2**63 - 1),
+        default=None,
+        help=f"random seed (default {DEFAULT_SEED}; not with --schedule)",
+    )
     p.add_argument(
         "--rounds",
         type=integer("rounds", 0, MAX_ROUNDS),
-        default=100,
-        help="stop after this many rounds (default 100)",
+        default=None,
+        help=f"stop after this many rounds (default {DEFAULT_ROUNDS}; not with --schedule)",
     )
     p.add_argument("--trace", help="write the run as a trace JSON file")
     add_force(p)
