@@ -211,7 +211,8 @@ Task = tuple[str, str, "Rule | None"]
 
 def tasks_for(model: Model, lemmas: tuple[str, ...] = ob.LEMMAS) -> list[Task]:
     """Every obligation ``prove`` decides for ``model`` and ``lemmas``, in results order."""
-    forms = ob.forms_for(model.options.scheduler)
+    scheduler = model.options.scheduler
+    forms = ob.forms_for(Scheduler.SSYNC if scheduler not in ENCODED else scheduler)
     tasks: list[Task] = [(lemma, form, rule) for lemma in lemmas for form in forms for rule in rules_for(model)]
     if "connectivity" in lemmas:
         tasks.append(("connectivity", "global", None))
@@ -247,6 +248,8 @@ def prove(
     tasks = tasks_for(model, lemmas) if tasks is None else tasks
     if not tasks:
         return []
+    if model.options.scheduler not in ENCODED:
+        return _not_encoded(model, tasks, slots, on_result, progress)
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
     calls = [
         (prove_one, (model, lemma, form, rule), {"slots": slots, "timeout": timeout, "out": out})
@@ -265,6 +268,36 @@ def prove(
 
     run_fresh(calls, workers, done)
     return [r for r in results if r is not None]
+
+
+ENCODED = (Scheduler.SSYNC, Scheduler.FSYNC, Scheduler.CENTRALIZED)
+"""The schedulers whose rounds the obligations encode: every mover decides on one shared snapshot."""
+
+
+def _not_encoded(
+    model: Model,
+    tasks: list[Task],
+    slots: int,
+    on_result: Callable[[ProofResult], None] | None,
+    progress: Callable[[str], None] | None,
+) -> list[ProofResult]:
+    """INCONCLUSIVE for every obligation of a scheduler the encoding does not cover: never another
+    scheduler's semantics in its place."""
+    reason = (
+        f"scheduler={model.options.scheduler}: not encoded; the obligations encode rounds in which every mover "
+        "decides on one shared snapshot (ssync, fsync, centralized), and an asynchronous robot may decide on a "
+        "stale view (another robot seen at an earlier point of its path); use fatline check for this scheduler"
+    )
+    results = []
+    for task in tasks:
+        lemma, form, rule = task
+        r = ProofResult(lemma, form, rule.value if rule else "any", Verdict.INCONCLUSIVE, slots, False, 0.0, reason, "")
+        results.append(r)
+        if on_result:
+            on_result(r)
+        if progress:
+            progress(task_key(task))
+    return results
 
 
 Call = tuple[Callable[..., Any], tuple[Any, ...], dict[str, Any]]
