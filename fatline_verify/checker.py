@@ -182,14 +182,10 @@ class CheckPlan:
     def counts(self) -> range:
         return range(self.robots[0], self.robots[1] + 1)
 
-    def searches(
-        self, progress: ProgressFn | None = None
-    ) -> Iterator[tuple[SearchStats, list[LemmaResult]]]:
+    def searches(self, progress: ProgressFn | None = None) -> Iterator[tuple[SearchStats, list[LemmaResult]]]:
         """One finished search per robot count, smallest first."""
         for n in self.counts:
-            yield check_robots(
-                self.model, n, self.window, self.max_states, self.engine, self.after_violation, progress
-            )
+            yield check_robots(self.model, n, self.window, self.max_states, self.engine, self.after_violation, progress)
 
     def result(self, done: list[tuple[SearchStats, list[LemmaResult]]]) -> CheckResult:
         """The result of the searches in ``done`` (all of them, or those finished before an interrupt)."""

@@ -2,7 +2,8 @@
 
 On a terminal: a tqdm bar with the stage, done/total, %, rate and ETA. Off a terminal (a pipe, a
 CI log): one plain line every few seconds (stage, counts, %, rate, ETA, memory), so a log shows a
-long run moving without drowning in carriage returns, and a short run prints nothing. ``enabled=False`` (``-q``) prints nothing.
+long run moving without drowning in carriage returns, and a short run prints nothing.
+``enabled=False`` (``-q``) prints nothing.
 """
 
 from __future__ import annotations

@@ -22,8 +22,9 @@ import signal
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
+from multiprocessing.connection import Connection
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 from .algorithm import Rule
 from .config import Model
@@ -339,7 +340,8 @@ def run_fresh(calls: list[Call], workers: int, done: Callable[[int, Any], None])
                 proc.start()
                 send.close()
                 running[receive] = (k, proc)
-            for conn in multiprocessing.connection.wait(list(running)):
+            for ready in multiprocessing.connection.wait(list(running)):
+                conn = cast(Connection, ready)
                 k, proc = running.pop(conn)
                 try:
                     ok, answer = conn.recv()
@@ -348,7 +350,7 @@ def run_fresh(calls: list[Call], workers: int, done: Callable[[int, Any], None])
                 conn.close()
                 proc.join()
                 if not ok:
-                    raise answer
+                    raise answer if isinstance(answer, BaseException) else RuntimeError(str(answer))
                 done(k, answer)
     finally:
         for conn, (_, proc) in running.items():

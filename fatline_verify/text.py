@@ -1,39 +1,138 @@
-"""Human text rendered from data: traces, decisions, violations, the option catalogue.
+"""Human text rendered from data: traces, decisions, violations, numbers, the option catalogue.
 
-The engine never prints; the CLI prints what these functions return.
+The engine never prints; the CLI prints what these functions return. Numbers stay exact in the
+data (traces hold ``"p/q"`` strings); text shows a squared distance as a short decimal (``≈3.94``,
+the ``≈`` marking a rounded value) and a long coordinate likewise, so a 200-digit fraction never
+reaches a caption. Rounding is done on the exact :class:`~fractions.Fraction`, for display only.
 """
 
 from __future__ import annotations
 
+import ast
+import inspect
+import itertools
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from fractions import Fraction
+from functools import cache
 from typing import Any
 
+from .algorithm import Decision, Rule
 from .config import Model
+from .numbers import Point, format_number, parse_number
 from .options import CATALOGUE, Options
+from .schedule import decide_all
+from .trace import trace_model
+
+DIGITS = 2
+"""Decimals of a rounded number (more when rounding would land on a whole number it is not)."""
+MAX_DIGITS = 12
+SHORT_EXACT = 9
+"""An exact value written in at most this many characters is shown as it is (``41/16``)."""
+SHORT_FRACTION = 15
+"""Plain text adds the exact fraction after a rounded squared distance when it is at most this long."""
 
 
-def _pt(p: list[Any]) -> str:
-    return f"({p[0]}, {p[1]})"
+# --- numbers for display -------------------------------------------------------------------------
 
 
-def violation_line(v: dict[str, Any]) -> str:
+def exact_value(value: object) -> Fraction:
+    """A number of a trace document (``int``, ``"p/q"``) or of the engine, exactly."""
+    if isinstance(value, Fraction | int):
+        return Fraction(value)
+    return Fraction(parse_number(value, name="number"))
+
+
+def exact_text(value: object) -> str:
+    """The exact value as the trace writes it: ``20`` or ``8474.../2135...``."""
+    return str(format_number(exact_value(value)))
+
+
+def _decimal(scaled: int, digits: int) -> str:
+    """``scaled / 10**digits`` in decimal notation, trailing zeros dropped."""
+    sign, size = ("-" if scaled < 0 else ""), abs(scaled)
+    whole, frac = divmod(size, 10**digits)
+    tail = str(frac).rjust(digits, "0").rstrip("0")
+    return f"{sign}{whole}" + (f".{tail}" if tail else "")
+
+
+def decimal_text(value: object, digits: int = DIGITS) -> str:
+    """A short decimal: exact when it is (``2.5``), else rounded and marked (``≈3.94``). A value
+    that would round to a whole number it is not gets more digits (``≈3.9999``, not ``≈4``), so a
+    rounded squared distance never reads as the contact or visibility boundary it misses."""
+    f = exact_value(value)
+    d = digits
+    while True:
+        scaled = round(f * 10**d)
+        shown = Fraction(scaled, 10**d)
+        if shown == f:
+            return _decimal(scaled, d)
+        if shown.denominator != 1 or d >= MAX_DIGITS:
+            return "≈" + _decimal(scaled, d)
+        d += 1
+
+
+def is_rounded(shown: str) -> bool:
+    """Whether a displayed number is not the exact value."""
+    return shown.startswith("≈")
+
+
+def coordinate_text(value: object) -> str:
+    """A coordinate: exact when short (``3``, ``41/16``), else a short decimal."""
+    text = exact_text(value)
+    return text if len(text) <= SHORT_EXACT else decimal_text(value)
+
+
+def area_text(value: object) -> str:
+    """A squared distance for plain text: the short decimal, then the exact fraction when it is
+    short (``≈3.94 (63/16)``); a long one is only in the trace."""
+    shown, text = decimal_text(value), exact_text(value)
+    return f"{shown} ({text})" if is_rounded(shown) and len(text) <= SHORT_FRACTION else shown
+
+
+@dataclass(frozen=True, slots=True)
+class NumberStyle:
+    """How a caption writes its numbers: squared distances (``area``) and coordinates."""
+
+    area: Callable[[object], str]
+    coordinate: Callable[[object], str]
+
+
+TEXT = NumberStyle(area_text, coordinate_text)
+"""Plain text (the CLI): short decimals, short exact fractions kept."""
+SHORT = NumberStyle(decimal_text, coordinate_text)
+"""Captions of pictures and pages: short decimals only (the exact value is in the trace, or on hover)."""
+
+
+def _pt(p: Sequence[Any], style: NumberStyle = TEXT) -> str:
+    return f"({style.coordinate(p[0])}, {style.coordinate(p[1])})"
+
+
+def violation_line(v: dict[str, Any], style: NumberStyle = TEXT) -> str:
     """One line for a violation record of a trace."""
     prop = v["property"]
     robots = " ".join(f"r{i}" for i in v["robots"])
     if prop == "no-collision":
         how = "both moving" if v.get("both_moved") else "one moving"
-        closest = v["closest_distance2"]
+        closest = style.area(v["closest_distance2"])
         return f"{prop}: {robots} collide ({how}); closest squared centre distance {closest} (discs touch at 4)"
     if prop == "connectivity":
         edges = ", ".join(
-            f"r{a}-r{b} (distance^2 {d})" for (a, b), d in zip(v["lost_edges"], v["distance2_after"], strict=True)
+            f"r{a}-r{b} (distance^2 {style.area(d)})"
+            for (a, b), d in zip(v["lost_edges"], v["distance2_after"], strict=True)
         )
         comps = " | ".join(" ".join(f"r{i}" for i in c) for c in v["components"])
         return f"{prop}: visibility graph split into {comps}; lost {edges}"
     if prop == "rma-fixed":
-        return f"{prop}: {robots} went from the right-most axis x={v['rma_x']} to x={v['x_after']}"
+        return (
+            f"{prop}: {robots} went from the right-most axis x={style.coordinate(v['rma_x'])} "
+            f"to x={style.coordinate(v['x_after'])}"
+        )
     if prop == "connectivity-edge":
         (a, b), d2 = v["robots"], v["distance2_after"][0]
-        return f"{prop}: r{a} and r{b} no longer see each other (distance^2 {d2}); the graph stays connected"
+        return (
+            f"{prop}: r{a} and r{b} no longer see each other (distance^2 {style.area(d2)}); the graph stays connected"
+        )
     if prop == "progress":
         return f"{prop}: deadlock: no robot is enabled and the robots are not on a line"
     if prop == "termination":
@@ -43,6 +142,83 @@ def violation_line(v: dict[str, Any]) -> str:
     return f"{prop}: {robots}"
 
 
+# --- why a robot stays -----------------------------------------------------------------------------
+
+
+@cache
+def rule_notes() -> dict[Rule, str]:
+    """Each :class:`~fatline_verify.algorithm.Rule`'s docstring in ``algorithm.py`` (for the
+    NoMovement bullets: the paper's words), whitespace collapsed; read from the source, so the
+    text lives in one place."""
+    try:
+        tree = ast.parse(inspect.getsource(Rule))
+    except (OSError, TypeError):  # no source (a frozen install): rules are named, not quoted
+        return {}
+    body = tree.body[0].body if tree.body and isinstance(tree.body[0], ast.ClassDef) else []
+    notes = {}
+    for node, doc in itertools.pairwise(body):
+        if (
+            isinstance(node, ast.Assign)
+            and isinstance(node.targets[0], ast.Name)
+            and isinstance(doc, ast.Expr)
+            and isinstance(doc.value, ast.Constant)
+            and isinstance(doc.value.value, str)
+        ):
+            notes[Rule[node.targets[0].id]] = " ".join(doc.value.value.replace("``", "").split())
+    return notes
+
+
+def rule_label(rule: Rule) -> str:
+    """``NoMovement bullet 4`` for a NoMovement rule, else the rule's name."""
+    if rule.value.startswith("nomovement-"):
+        return f"NoMovement bullet {rule.value.split('-')[1]}"
+    return rule.value
+
+
+def rule_quote(rule: Rule) -> str:
+    """The paper's words for a rule (the quoted part of its docstring), else its docstring."""
+    note = rule_notes().get(rule, "")
+    if note.startswith('"') and '"' in note[1:]:
+        return note[: note.index('"', 1) + 1]
+    return note
+
+
+def _seen(i: int, decision: Decision, state: Sequence[Point]) -> str:
+    """``sees r1 in A, r2 in A and C``: the robots ``i`` sees and the sets it put them in."""
+    index = {p: j for j, p in enumerate(state)}
+    ox, oy = state[i]
+    seen = [
+        f"r{index[(ox + c[0], oy + c[1])]} in {' and '.join(sorted(m)) or 'no set'}" for c, m in decision.classification
+    ]
+    return "sees " + ", ".join(seen) if seen else "sees no robot"
+
+
+def stay_lines(state: Sequence[Point], model: Model) -> list[str]:
+    """Why each robot of ``state`` (a deadlock) keeps still: per robot the rule (for NoMovement the
+    bullet) and what it sees, then each rule used with the paper's words."""
+    decisions = decide_all(state, model)
+    lines, used = [], []
+    for i, d in sorted(decisions.items()):
+        status = "enabled, " if d.moves else ""
+        lines.append(f"r{i}: {status}{rule_label(d.rule)} ({_seen(i, d, state)})")
+        if d.rule not in used:
+            used.append(d.rule)
+    for rule in used:
+        quote = rule_quote(rule)
+        if quote:
+            lines.append(f"{rule_label(rule)}: {quote}")
+    return lines
+
+
+def final_state(doc: dict[str, Any], model: Model) -> tuple[Point, ...]:
+    """The positions after a trace's last round, in ``model``'s lattice units."""
+    points = doc["rounds"][-1]["positions"] if doc["rounds"] else doc["initial"]
+    return tuple(model.to_lattice((exact_value(x), exact_value(y))) for x, y in points)
+
+
+# --- traces ----------------------------------------------------------------------------------------
+
+
 _CASE_NOTE = {
     "scenario-2": " (Scenario 2's search found no vacant point)",
     "scenario-3": " (Scenario 3's search found no vacant point)",
@@ -50,16 +226,21 @@ _CASE_NOTE = {
 }
 
 
-def trace_lines(doc: dict[str, Any]) -> list[str]:
-    """The rounds of a trace document, one block per round, and its outcome."""
-    lines = ["start: " + "  ".join(f"r{i} {_pt(p)}" for i, p in enumerate(doc["initial"]))]
+def _positions_line(points: list[Any]) -> str:
+    return "  ".join(f"r{i} {_pt(p)}" for i, p in enumerate(points))
+
+
+def trace_lines(doc: dict[str, Any], model: Model | None = None) -> list[str]:
+    """The rounds of a trace document, one block per round, and its outcome; for a deadlock, why
+    each robot stays (under ``model``, by default the trace's own)."""
+    lines = ["start: " + _positions_line(doc["initial"])]
     for k, rnd in enumerate(doc["rounds"], start=1):
         lines.append(f"round {k}: active " + " ".join(f"r{i}" for i in rnd["active"]))
         for d in rnd["decisions"]:
-            psi = f", psi_right x={d['psi']}" if d.get("psi") is not None else ""
+            psi = f", psi_right x={coordinate_text(d['psi'])}" if d.get("psi") is not None else ""
             case = _CASE_NOTE.get(d.get("case") or "", "") if d["rule"].startswith(("scenario-4", "uncovered")) else ""
             lines.append(f"  r{d['robot']} {d['rule']}{case} -> {_pt(d['destination'])}{psi}")
-        lines.append("  now: " + "  ".join(f"r{i} {_pt(p)}" for i, p in enumerate(rnd["positions"])))
+        lines.append("  now: " + _positions_line(rnd["positions"]))
         for v in rnd["violations"]:
             lines.append("  VIOLATED " + violation_line(v))
     n = len(doc["rounds"])
@@ -71,11 +252,23 @@ def trace_lines(doc: dict[str, Any]) -> list[str]:
         "cycle": "a fair cycle: the loop below repeats forever without forming the line",
     }[doc["outcome"]]
     lines.append(f"outcome after {n} round{'s' if n != 1 else ''}: {tail}")
+    if doc["outcome"] == "deadlock":
+        model = model or trace_model(doc)
+        lines += ["  " + line for line in stay_lines(final_state(doc, model), model)]
     if doc.get("loop_start") is not None:
         lines.append(f"the rounds after round {doc['loop_start']} repeat forever (the swarm returns, translated)")
     if doc.get("violation"):
         lines.append("witnesses " + violation_line(doc["violation"]))
     return lines
+
+
+def _reading_marks(spec: Any, reading: str, chosen: dict[str, str], model: Model | None) -> str:
+    marks = []
+    if reading == spec.default.value:
+        marks.append("default")
+    if model is not None and chosen[spec.name] == reading:
+        marks.append(f"model {model.name}")
+    return f" [{', '.join(marks)}]" if marks else ""
 
 
 def explain_lines(name: str | None = None, model: Model | None = None) -> list[str]:
@@ -88,18 +281,45 @@ def explain_lines(name: str | None = None, model: Model | None = None) -> list[s
         lines.append(f"{n}")
         lines.append(f'  paper: "{spec.quote}"')
         for reading, meaning in spec.readings.items():
-            marks = []
-            if reading == spec.default.value:
-                marks.append("default")
-            if model is not None and chosen[n] == reading:
-                marks.append(f"model {model.name}")
-            tag = f" [{', '.join(marks)}]" if marks else ""
             pointer = "*" if chosen[n] == reading else " "
-            lines.append(f"  {pointer} {reading}{tag}: {meaning}")
+            lines.append(f"  {pointer} {reading}{_reading_marks(spec, reading, chosen, model)}: {meaning}")
         if spec.note:
             lines.append(f"  note: {spec.note}")
         lines.append("")
     return lines[:-1] if lines else lines
+
+
+READINGS_DOC = "docs/readings.md"
+"""Where the catalogue ships, relative to the repository root (``python -m fatline_verify.docs``)."""
+
+
+def readings_markdown() -> str:
+    """``docs/readings.md``: every option of the catalogue with the paper's words, every reading with
+    its meaning, the default. Generated from ``options.py``; a test keeps the shipped file equal."""
+    lines = [
+        "<!-- generated by fatline-verify: python -m fatline_verify.docs (from fatline_verify/options.py); "
+        "do not edit -->",
+        "# Readings of the paper",
+        "",
+        "The paper is informal; each place where its text admits several precise readings is an *option*",
+        "with named *readings*. A model file chooses one reading per option (`[options]` in `models/*.toml`);",
+        "an option it leaves out keeps its default. `fatline explain [OPTION] [--model M]` prints the same",
+        "catalogue, and the reports name readings as `option=reading`.",
+        "",
+        "| option | default | other readings |",
+        "|---|---|---|",
+    ]
+    for name, spec in CATALOGUE.items():
+        others = ", ".join(f"`{r}`" for r in spec.readings if r != spec.default.value)
+        lines.append(f"| [{name}](#{name}) | `{spec.default.value}` | {others} |")
+    for name, spec in CATALOGUE.items():
+        lines += ["", f"## {name}", "", f"The paper: “{spec.quote}”", ""]
+        for reading, meaning in spec.readings.items():
+            default = " (default)" if reading == spec.default.value else ""
+            lines.append(f"- `{reading}`{default}: {meaning}")
+        if spec.note:
+            lines += ["", f"Note: {spec.note}."]
+    return "\n".join(lines) + "\n"
 
 
 def table(headers: list[str], rows: list[list[str]]) -> list[str]:
@@ -157,6 +377,17 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
         )
     else:
         lines.append("States reached through violating rounds are explored further (--after-violation continue).")
+    lines += [
+        "Columns: initial = initial configurations up to translation; escaped = successors outside the window "
+        "(not explored); violating-only = states reached only through a violating round; witness = rounds in the "
+        "shortest witness (replayed before it is reported).",
+        "A lemma that holds, holds for these robot counts and this window only. "
+        + {
+            "VIOLATED": "Exit code 1: violations were found.",
+            "INCONCLUSIVE": "Exit code 3: nothing violated, but a bound was hit (INCONCLUSIVE).",
+            "HOLDS_WITHIN_BOUNDS": "Exit code 0: every lemma holds within these bounds.",
+        }["VIOLATED" if result.any_violated else "INCONCLUSIVE" if result.any_inconclusive else "HOLDS_WITHIN_BOUNDS"],
+    ]
     return lines
 
 

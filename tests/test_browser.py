@@ -68,3 +68,47 @@ def test_step_through_a_counterexample(browser, tmp_path):
     shot = tmp_path / "report.png"
     browser.save_screenshot(str(shot))
     assert shot.stat().st_size > 10_000
+
+
+def _render_fresh(tmp_path: Path) -> Path:
+    """The report pages as this code renders them from the committed results, in ``tmp_path``; the
+    pictures are the committed ones (linked), so the page is what a regenerated report shows."""
+    from fatline_verify.report.build import _earlier, stamp
+    from fatline_verify.report.pages import ASSETS, cross_model_html, model_html
+
+    out = tmp_path / "reports"
+    out.mkdir()
+    (tmp_path / "docs").symlink_to(ROOT / "docs")
+    reports = sorted(_earlier([], ROOT / "reports", ROOT / "proofs"), key=lambda r: r.model.name)
+    for name, text in ASSETS.items():
+        (out / name).write_text(stamp(name, text), encoding="utf-8")
+    for r in reports:
+        (out / r.model.name).mkdir()
+        (out / r.model.name / "img").symlink_to(ROOT / "reports" / r.model.name / "img")
+        (out / r.model.name / "index.html").write_text(model_html(r), encoding="utf-8")
+    (out / "index.html").write_text(cross_model_html(reports), encoding="utf-8")
+    return out
+
+
+def test_the_pages_fit_a_1400_px_window(browser, tmp_path):
+    """The matrix page (and every model page) has no horizontal scroll bar at 1400 px, and the
+    matrix stays inside the page's column."""
+    out = _render_fresh(tmp_path)
+    browser.set_window_size(1400, 1000)
+    pages = [out / "index.html", *sorted(out.glob("*/index.html"))]
+    for page in pages:
+        browser.get(page.as_uri())
+        scroll, client = browser.execute_script(
+            "return [document.documentElement.scrollWidth, document.documentElement.clientWidth]"
+        )
+        assert client >= 1300 and scroll <= client, (page.relative_to(out), scroll, client)
+    browser.get((out / "index.html").as_uri())
+    table, body = browser.execute_script(
+        "var t = document.querySelector('table.matrix').getBoundingClientRect();"
+        "var s = getComputedStyle(document.body), b = document.body.getBoundingClientRect();"
+        "return [t.right, b.right - parseFloat(s.paddingRight)]"
+    )
+    assert table <= body + 1
+    shot = tmp_path / "matrix-1400.png"
+    browser.save_screenshot(str(shot))
+    assert shot.stat().st_size > 10_000

@@ -94,7 +94,7 @@ def cmd_replay(args: argparse.Namespace) -> int:
         under = f" under {override.name}" if override is not None else ""
         lines = [f"{name}: reproduces{under}: {len(run.rounds)} rounds, {what}"]
         if args.verbose:
-            lines += ["  " + line for line in trace_lines(doc)]
+            lines += ["  " + line for line in trace_lines(doc, override)]
         if picture is not None:
             from ..report.pictures import frames
 

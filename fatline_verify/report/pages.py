@@ -2,16 +2,21 @@
 
 Markdown for reading on a repository page; HTML with an offline step-through viewer: plain HTML,
 SVG pictures referenced by relative path, and a few lines of JavaScript (previous, next, play).
+The cross-model matrix fits a 1400 px window; numbers in captions are short decimals, in HTML
+with the exact value on hover; readings link to the catalogue ``docs/readings.md``.
 """
 
 from __future__ import annotations
 
 import html
 import json
+import re
+from collections.abc import Callable
 from typing import Any
 
+from ..options import CATALOGUE
 from ..properties import Lemma
-from ..text import violation_line
+from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, violation_line
 from .data import ModelReport
 
 RANK = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
@@ -43,30 +48,89 @@ th, td { border: 1px solid #ccc; padding: 0.3em 0.6em; text-align: left; vertica
 th { background: #f3f3f3; }
 .VIOLATED { background: #fde0e0; } .HOLDS_WITHIN_BOUNDS { background: #e3f4e3; }
 .PROVED { background: #c8ecc8; } .INCONCLUSIVE { background: #fff4d6; }
-.viewer { border: 1px solid #ccc; padding: 0.6em; margin: 1em 0; }
+table.matrix { width: 100%; font-size: 0.85em; }
+.matrix th { font-weight: 600; }
+.matrix th.group { text-align: center; }
+.matrix td.readings { min-width: 10em; max-width: 14em; }
+.matrix td.readings code { font-size: 0.95em; }
+.matrix .robots { color: #555; white-space: nowrap; }
+.viewer { border: 1px solid #ccc; padding: 0.6em; margin: 1em 0; overflow-wrap: anywhere; }
 .viewer img { max-width: 100%; height: auto; display: block; margin: 0.5em 0; }
+.card { margin: 1.5em 0; } .card h3 { margin-bottom: 0.2em; } .card p { margin: 0.2em 0; }
+.exact { border-bottom: 1px dotted #777; cursor: help; }
 code { background: #f5f5f5; padding: 0 0.2em; }
 """
+
+DOCS_LINK = f"../{READINGS_DOC}"
+"""The readings catalogue, relative to the report root (``reports/`` sits beside ``docs/``)."""
+
+
+def _worst_of(rows: list[dict[str, Any]], lemma: str) -> tuple[str, int] | None:
+    """The worst verdict over robot counts and the smallest robot count that has it."""
+    mine = [(RANK[r["verdict"]], r["robots"], r["verdict"]) for r in rows if r["lemma"] == lemma]
+    if not mine:
+        return None
+    _, robots, verdict = min(mine)
+    return verdict, robots
 
 
 def _worst(rows: list[dict[str, Any]], lemma: str) -> str:
     """The worst verdict over robot counts, with the smallest robot count that has it."""
-    mine = [(RANK[r["verdict"]], r["robots"], r["verdict"]) for r in rows if r["lemma"] == lemma]
-    if not mine:
+    worst = _worst_of(rows, lemma)
+    if worst is None:
         return ""
-    _, robots, verdict = min(mine)
+    verdict, robots = worst
     return f"{verdict} ({robots} robots)" if verdict == "VIOLATED" else verdict
 
 
-def _prover_summary(rows: list[dict[str, Any]], lemma: str) -> str:
+def _prover_counts(rows: list[dict[str, Any]], lemma: str) -> list[tuple[str, int]]:
+    """How many of a lemma's obligations have each verdict, worst first."""
     mine = [r["verdict"] for r in rows if r["lemma"] == lemma]
-    counts = {v: mine.count(v) for v in RANK if mine.count(v)}
-    return ", ".join(f"{n} {v}" for v, n in sorted(counts.items(), key=lambda kv: RANK[kv[0]]))
+    return [(v, mine.count(v)) for v in sorted(RANK, key=RANK.__getitem__) if mine.count(v)]
+
+
+def _prover_summary(rows: list[dict[str, Any]], lemma: str) -> str:
+    return ", ".join(f"{n} {v}" for v, n in _prover_counts(rows, lemma))
 
 
 def _readings(report: ModelReport) -> str:
     diff = report.model.options.differences()
     return ", ".join(f"{k}={v}" for k, v in diff.items()) or "every default reading"
+
+
+def _readings_html(report: ModelReport, root: str, sep: str = ", ") -> str:
+    """The model's readings, each linked to its entry in the catalogue, its meaning on hover."""
+    docs = html.escape(root + DOCS_LINK)
+    diff = report.model.options.differences()
+    if not diff:
+        return f'<a href="{docs}">every default reading</a>'
+    return sep.join(
+        f'<a href="{docs}#{html.escape(k)}" title="{html.escape(CATALOGUE[k].readings[v])}">'
+        f"<code>{html.escape(k)}=<wbr>{html.escape(v)}</code></a>"
+        for k, v in diff.items()
+    )
+
+
+def html_numbers(render: Callable[[NumberStyle], str]) -> str:
+    """The text ``render`` writes with :data:`~fatline_verify.text.SHORT` numbers, as HTML: each
+    number that is shown rounded or shortened carries its exact value in a ``title`` (on hover)."""
+    shown: list[tuple[str, str]] = []
+
+    def marking(fmt: Callable[[object], str]) -> Callable[[object], str]:
+        def mark(value: object) -> str:
+            shown.append((fmt(value), exact_text(value)))
+            return f"\x00{len(shown) - 1}\x00"
+
+        return mark
+
+    text = html.escape(render(NumberStyle(marking(SHORT.area), marking(SHORT.coordinate))))
+    return re.sub("\x00(\\d+)\x00", lambda m: _number_html(*shown[int(m[1])]), text)
+
+
+def _number_html(display: str, exact: str) -> str:
+    if display == exact:
+        return html.escape(display)
+    return f'<span class="exact" title="exact: {html.escape(exact)}">{html.escape(display)}</span>'
 
 
 def _md_table(headers: list[str], rows: list[list[str]]) -> list[str]:
@@ -135,9 +199,9 @@ CHECK_HEAD = ["lemma", "robots", "verdict", "witness", "detail", "trace"]
 PROVE_HEAD = ["lemma", "form", "rule", "verdict", "slots", "seconds", "detail", "trace"]
 
 
-def _trace_text(t: dict[str, Any]) -> str:
+def _trace_text(t: dict[str, Any], style: NumberStyle = SHORT) -> str:
     v = t["doc"].get("violation")
-    return violation_line(v) if v else t["doc"]["outcome"]
+    return violation_line(v, style) if v else t["doc"]["outcome"]
 
 
 def model_markdown(report: ModelReport) -> str:
@@ -148,8 +212,8 @@ def model_markdown(report: ModelReport) -> str:
         "",
         m.description,
         "",
-        f"Readings: {_readings(report)}. Parameters: rad_v={m.parameters.rad_v}, q={m.parameters.q}, "
-        f"delta={m.parameters.delta}.",
+        f"Readings: {_readings(report)} ([what the readings mean](../{DOCS_LINK})). "
+        f"Parameters: rad_v={m.parameters.rad_v}, q={m.parameters.q}, delta={m.parameters.delta}.",
         "",
         f"Regenerate: `fatline report models/{m.name}.toml` (reuses the cached results while they are up to date; "
         "`--refresh` recomputes). [HTML version with a step-through viewer](index.html).",
@@ -164,7 +228,7 @@ def model_markdown(report: ModelReport) -> str:
     lines += [*_md_table(CHECK_HEAD, _check_rows(report)), ""]
     lines += ["## Prover (z3, any swarm size)", "", f"Solver: {report.prove['solver']}.", ""]
     lines += [*_md_table(PROVE_HEAD, _prove_rows(report)), ""]
-    lines += ["## Counterexamples", ""]
+    lines += ["## Counterexamples", "", "Long numbers are rounded (≈); the trace files hold them exactly.", ""]
     for t in report.traces:
         lines += [
             f"### {t['name']}",
@@ -196,11 +260,13 @@ def _html_table(headers: list[str], rows: list[list[str]], verdict_col: int | No
 
 
 def viewer(t: dict[str, Any], prefix: str = "") -> str:
+    """A trace's step-through viewer: caption (numbers exact on hover), buttons, the pictures."""
     frames = [prefix + f for f in t["frames"]]
+    caption = html_numbers(lambda style: _trace_text(t, style))
     return (
         f'<div class="viewer" id="{html.escape(t["name"])}" data-frames="{html.escape(json.dumps(frames))}">'
         f"<strong>{html.escape(t['name'])}</strong>: {html.escape(t['source'])}, {html.escape(t['lemma'])}, "
-        f"{html.escape(t['what'])} ({html.escape(t['verdict'])}): {html.escape(_trace_text(t))}<br>"
+        f"{html.escape(t['what'])} ({html.escape(t['verdict'])}): {caption}<br>"
         '<button class="prev">previous</button> <button class="next">next</button> '
         '<button class="play">play</button> <span class="counter"></span>'
         f'<img alt="picture of the trace" src="{html.escape(frames[0])}">'
@@ -226,7 +292,8 @@ def model_html(report: ModelReport) -> str:
     b = m.bounds
     parts = [
         f"<h1>Model <code>{html.escape(m.name)}</code></h1><p>{html.escape(m.description)}</p>",
-        f"<p>Readings: {html.escape(_readings(report))}. <a href='../index.html'>All models</a>.</p>",
+        f"<p>Readings: {_readings_html(report, '../')} (<a href='{html.escape('../' + DOCS_LINK)}'>what the readings "
+        "mean</a>). <a href='../index.html'>All models</a>.</p>",
         f"<h2>Bounded model checker</h2><p>Robots {b.robots[0]}..{b.robots[1]}, "
         f"window {b.window[0]}x{b.window[1]}.</p>",
         _html_table(SEARCH_HEAD, _search_rows(report)),
@@ -266,24 +333,118 @@ def cross_model_markdown(reports: list[ModelReport]) -> str:
     headers, rows = _matrix(reports)
     rows = [[f"[{r[0]}]({r[0]}/README.md)", *r[1:]] for r in rows]
     lines = ["# fatline-verify reports", "", INTRO, "", *_md_table(headers, rows), ""]
+    lines += [f"What each reading (`option=reading`) means: [{READINGS_DOC}]({DOCS_LINK}).", ""]
     lines += ["Regenerate everything: `fatline report` (every shipped model).", ""]
     return "\n".join(lines)
 
 
-def cross_model_html(reports: list[ModelReport]) -> str:
-    headers, rows = _matrix(reports)
-    table = _html_table(headers, rows)
+CHECK_TITLE = "bounded model checker: worst verdict over the robot counts, with the smallest swarm that shows it"
+PROVE_TITLE = "prover: z3 obligations per rule over the reals, counted by verdict"
+
+
+def _verdict_html(verdict: str) -> str:
+    """A verdict that may wrap at its underscores (``HOLDS_WITHIN_BOUNDS`` is wider than a column)."""
+    return html.escape(verdict).replace("_", "_<wbr>")
+
+
+def _check_cell(rows: list[dict[str, Any]], lemma: str) -> str:
+    worst = _worst_of(rows, lemma)
+    if worst is None:
+        return "<td></td>"
+    verdict, robots = worst
+    swarm = f'<br><span class="robots">{robots} robots</span>' if verdict == "VIOLATED" else ""
+    return f'<td class="{html.escape(verdict)}">{_verdict_html(verdict)}{swarm}</td>'
+
+
+def _prove_cell(rows: list[dict[str, Any]], lemma: str) -> str:
+    counts = _prover_counts(rows, lemma)
+    if not counts:
+        return "<td></td>"
+    lines = "<br>".join(f"{n}&nbsp;{_verdict_html(v)}" for v, n in counts)
+    return f'<td class="{html.escape(counts[0][0])}">{lines}</td>'
+
+
+def _matrix_html(reports: list[ModelReport]) -> str:
+    """The readings x lemmas matrix: grouped headers, a compact readings column, verdicts that wrap."""
+    check, prove = len(Lemma), len(PROVER_LEMMAS)
+    head = (
+        '<tr><th rowspan="2">model</th><th rowspan="2">readings</th>'
+        f'<th class="group" colspan="{check}" title="{html.escape(CHECK_TITLE)}">check (bounded model checker)</th>'
+        f'<th class="group" colspan="{prove}" title="{html.escape(PROVE_TITLE)}">prove (z3, per rule)</th></tr><tr>'
+        + "".join(f'<th title="{html.escape(CHECK_TITLE)}">{html.escape(lemma.value)}</th>' for lemma in Lemma)
+        + "".join(f'<th title="{html.escape(PROVE_TITLE)}">{html.escape(lemma)}</th>' for lemma in PROVER_LEMMAS)
+        + "</tr>"
+    )
+    body = []
     for r in reports:
-        table = table.replace(
-            f"<td>{html.escape(r.model.name)}</td>",
-            f'<td><a href="{html.escape(r.model.name)}/index.html">{html.escape(r.model.name)}</a></td>',
-            1,
-        )
-    for v in RANK:
-        table = table.replace(f"<td>{v}", f'<td class="{v}">{v}')
-    featured = [viewer(r.traces[0], prefix=f"{r.model.name}/") for r in reports if r.traces]
+        name = html.escape(r.model.name)
+        cells = [f'<td class="model"><a href="{name}/index.html">{name}</a></td>']
+        cells.append(f'<td class="readings">{_readings_html(r, "", sep="<br>")}</td>')
+        cells += [_check_cell(r.check["lemmas"], lemma.value) for lemma in Lemma]
+        cells += [_prove_cell(r.prove["obligations"], lemma) for lemma in PROVER_LEMMAS]
+        body.append("<tr>" + "".join(cells) + "</tr>")
+    return f'<table class="matrix">{head}{"".join(body)}</table>'
+
+
+LEMMA_ORDER = {lemma.value: k for k, lemma in enumerate(Lemma)}
+
+
+def _smallest_first(t: dict[str, Any]) -> tuple[int, int, int, str]:
+    """Fewest robots, then fewest rounds, then the matrix's lemma order."""
+    doc = t["doc"]
+    return len(doc["initial"]), len(doc["rounds"]), LEMMA_ORDER.get(t["lemma"], len(LEMMA_ORDER)), t["name"]
+
+
+def _run_of(t: dict[str, Any]) -> str:
+    """What a trace's pictures show: the start, every round, the end (not the model's name)."""
+    doc = t["doc"]
+    return json.dumps([doc["initial"], doc["rounds"], doc["outcome"]])
+
+
+def _pick(report: ModelReport, shown: set[str]) -> tuple[dict[str, Any] | None, str]:
+    """The model's own counterexample for its card, and why it is that one."""
+    checked = sorted((t for t in report.traces if t["source"] == "check"), key=_smallest_first)
+    pool, what = (
+        (checked, "check witness") if checked else (sorted(report.traces, key=_smallest_first), "prover counterexample")
+    )
+    if not pool:
+        return None, "no counterexample: every lemma holds within the bounds or is inconclusive"
+    fresh = [t for t in pool if _run_of(t) not in shown]
+    why = f"its smallest {what} (fewest robots, then fewest rounds)"
+    if not fresh:
+        return pool[0], why + "; a run also shown above"
+    return fresh[0], why + (" whose run no model above shows" if fresh[0] is not pool[0] else "")
+
+
+def featured(reports: list[ModelReport]) -> list[tuple[ModelReport, dict[str, Any] | None, str]]:
+    """Per model, the counterexample its card shows and why: its own smallest check witness (a
+    prover counterexample when the checker found none), skipping runs a card above already shows —
+    several models share the smallest runs, and a card repeating one would say nothing new."""
+    shown: set[str] = set()
+    out: list[tuple[ModelReport, dict[str, Any] | None, str]] = []
+    for r in reports:
+        pick, why = _pick(r, shown)
+        if pick is not None:
+            shown.add(_run_of(pick))
+        out.append((r, pick, why))
+    return out
+
+
+def _card(report: ModelReport, trace: dict[str, Any] | None, why: str) -> str:
+    name = html.escape(report.model.name)
+    head = (
+        f'<div class="card" id="card-{name}"><h3>Model <a href="{name}/index.html">{name}</a></h3>'
+        f"<p>Readings: {_readings_html(report, '')}. Shown: {html.escape(why)}.</p>"
+    )
+    return head + (viewer(trace, prefix=f"{report.model.name}/") if trace else "") + "</div>"
+
+
+def cross_model_html(reports: list[ModelReport]) -> str:
     intro = html.escape(INTRO.replace("*", "").replace("`", ""))
-    body = f"<h1>fatline-verify reports</h1><p>{intro}</p>{table}<h2>A counterexample per model</h2>" + "\n".join(
-        featured
+    docs = f'<p>What each reading means: <a href="{html.escape(DOCS_LINK)}">{html.escape(READINGS_DOC)}</a>.</p>'
+    cards = "\n".join(_card(r, t, why) for r, t, why in featured(reports))
+    body = (
+        f"<h1>fatline-verify reports</h1><p>{intro}</p>{_matrix_html(reports)}{docs}"
+        f"<h2>A counterexample per model</h2>{cards}"
     )
     return _page("fatline-verify reports", body, "")

@@ -3,8 +3,10 @@
 Every picture is drawn from the *replayed* run, never from the trace's text: the discs to scale,
 the acting robot's visibility circle with its bands A ... I shaded and labelled, each move as an
 arrow along its path (the destination as a dotted disc), and the round's violation highlighted
-(colliding discs in red with the exact closest squared distance, lost edges dashed, the RMA).
-Floats are used for drawing only.
+(colliding discs in red with the closest squared distance, lost edges dashed, the RMA). A deadlock's
+last picture says, per robot, which NoMovement bullet keeps it still, with the paper's words.
+Floats are used for drawing only; captions show long numbers as short decimals (the exact values
+are in the trace).
 """
 
 from __future__ import annotations
@@ -26,7 +28,7 @@ from ..config import Model
 from ..options import Bands, Quadrants, Visibility
 from ..schedule import Collision, Disconnection, RmaMoved
 from ..simulate import Run
-from ..text import violation_line
+from ..text import SHORT, stay_lines, violation_line
 
 plt.rcParams["svg.hashsalt"] = "fatline-verify"
 plt.rcParams["svg.fonttype"] = "none"
@@ -132,18 +134,22 @@ def frame_figure(run: Run, k: int, doc: dict[str, Any]) -> Any:
     ax.set_xlim(min(xs) - 1.5, max(xs) + 1.5)
     ax.set_ylim(min(ys) - 1.5, max(ys) + 1.5)
     ax.grid(True, lw=0.3, alpha=0.5)
-    ax.set_title(_title(doc, k, n_rounds), fontsize=9, loc="left")
+    ax.set_title(_title(run, doc, k), fontsize=9, loc="left")
     return fig
 
 
-def _title(doc: dict[str, Any], k: int, n_rounds: int) -> str:
+def _title(run: Run, doc: dict[str, Any], k: int) -> str:
+    """The caption of picture ``k``: the round's moves and violations, or how the trace ends."""
+    n_rounds = len(run.rounds)
     if 1 <= k <= n_rounds:
         rec = doc["rounds"][k - 1]
         moves = "; ".join(
-            f"r{d['robot']} {d['rule']} -> ({d['destination'][0]}, {d['destination'][1]})" for d in rec["decisions"]
+            f"r{d['robot']} {d['rule']} -> ({SHORT.coordinate(d['destination'][0])}, "
+            f"{SHORT.coordinate(d['destination'][1])})"
+            for d in rec["decisions"]
         )
         lines = [f"round {k} of {n_rounds}: {moves}"]
-        lines += [violation_line(v) for v in rec["violations"]]
+        lines += [violation_line(v, SHORT) for v in rec["violations"]]
         return "\n".join(_wrap(line) for line in lines)
     if k == 0:
         return "start"
@@ -155,7 +161,10 @@ def _title(doc: dict[str, Any], k: int, n_rounds: int) -> str:
         "round-limit": "end of trace",
     }
     v = doc.get("violation")
-    return _wrap(f"end: {tail[doc['outcome']]}" + (f"; {violation_line(v)}" if v else ""))
+    lines = [f"end: {tail[doc['outcome']]}" + (f"; {violation_line(v, SHORT)}" if v else "")]
+    if doc["outcome"] == "deadlock":
+        lines += stay_lines(run.final, run.model)
+    return "\n".join(_wrap(line) for line in lines)
 
 
 def _wrap(text: str, width: int = 80) -> str:
