@@ -74,10 +74,12 @@ class Progress:
         if self.bar is not None:
             if total is not None and self.bar.total != total:
                 self.bar.total = total
-            self.bar.n = done
             if note:
                 self.bar.set_postfix_str(note, refresh=False)
-            self.bar.refresh()
+            if done > self.bar.n:
+                self.bar.update(done - self.bar.n)  # tqdm's own rate and ETA need real increments
+            else:
+                self.bar.refresh()
 
     def step(self, label: str) -> None:
         """One unit of the current stage done (``label`` names it)."""
