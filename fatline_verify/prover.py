@@ -31,6 +31,7 @@ from .config import Model
 from .options import Scheduler, Uncovered
 from .properties import Verdict
 from .schedule import Collision, decide_all, lost_edges, play_round
+from .schedulers import round_scheduler
 from .simulate import Outcome, Run, outcome_after
 from .smt import obligations as ob
 from .smt.symbolic import MOVING
@@ -166,11 +167,7 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
         state = ((0, 0), *(model.to_lattice(p) for p in ans.positions))
         index = [0] + [1 + sum(present[:i]) for i in range(k)]  # state index of r and of each slot
         active = [index[i] for i in range(k + 1) if active_flags[i] and (i == 0 or present[i - 1])]
-        legal = {
-            Scheduler.FSYNC: len(active) == len(state),
-            Scheduler.CENTRALIZED: len(active) == 1,
-        }.get(model.options.scheduler, bool(active))
-        if not legal:
+        if round_scheduler(model.options.scheduler).forbids(tuple(active), len(state)) is not None:
             return result(
                 Verdict.INCONCLUSIVE, k, f"encoding disagreement: activation set {active} breaks the scheduler"
             )

@@ -16,9 +16,10 @@ from enum import StrEnum
 
 from .algorithm import Decision
 from .config import Model
-from .errors import InvalidInput, Unsupported
+from .errors import InvalidInput
 from .options import Scheduler
 from .schedule import RoundResult, decide_all, enabled, play_round
+from .schedulers import round_scheduler
 from .swarm import State, is_goal, require_initial
 
 
@@ -77,8 +78,7 @@ class FairRandomScheduler:
     """Chooses activation sets at random, seeded, never starving an enabled robot."""
 
     def __init__(self, kind: Scheduler, seed: int, n: int) -> None:
-        if kind is Scheduler.ASYNC:
-            raise Unsupported("scheduler='async': not implemented yet; expected one of ssync, fsync, centralized")
+        self.scheduler = round_scheduler(kind)
         self.kind = kind
         self.rng = random.Random(seed)
         self.n = n
@@ -86,16 +86,7 @@ class FairRandomScheduler:
 
     def choose(self, candidates: tuple[int, ...]) -> tuple[int, ...]:
         """The robots to activate among the enabled ``candidates`` (non-empty)."""
-        if self.kind is Scheduler.FSYNC:
-            chosen = set(range(self.n))
-        elif self.kind is Scheduler.CENTRALIZED:
-            starved = [i for i in candidates if self.waiting[i] >= self.n]
-            pool = [max(starved, key=lambda i: self.waiting[i])] if starved else list(candidates)
-            chosen = {self.rng.choice(pool)}
-        else:
-            chosen = {i for i in candidates if self.rng.random() < 0.5 or self.waiting[i] >= self.n}
-            if not chosen:
-                chosen = {self.rng.choice(candidates)}
+        chosen = self.scheduler.choose(self.rng, candidates, self.waiting, self.n)
         for i in range(self.n):
             self.waiting[i] = 0 if (i in chosen or i not in candidates) else self.waiting[i] + 1
         return tuple(sorted(chosen))
@@ -139,20 +130,6 @@ def _schedule_expected(n: int) -> str:
     )
 
 
-def _scheduler_allows(kind: Scheduler, active: tuple[int, ...], n: int) -> str | None:
-    """Why ``kind`` forbids activating ``active`` in one round, or ``None`` when it allows it."""
-    if kind is Scheduler.CENTRALIZED and len(active) != 1:
-        shown = ",".join(map(str, active))
-        return (
-            f"activates {len(active)} robots ({shown}); expected exactly one robot per round under "
-            "scheduler=centralized"
-        )
-    if kind is Scheduler.FSYNC and len(active) != n:
-        shown = ",".join(map(str, active))
-        return f"activates robots {shown} of {n}; expected every robot ('all') in every round under scheduler=fsync"
-    return None
-
-
 def parse_schedule(text: str, n: int, scheduler: Scheduler) -> list[tuple[int, ...]]:
     """The activation sets of ``text`` (``"0;1,2;all"``) for ``n`` robots, each checked against
     ``scheduler``: ``centralized`` one robot a round, ``fsync`` every robot, ``ssync`` any non-empty set.
@@ -161,8 +138,7 @@ def parse_schedule(text: str, n: int, scheduler: Scheduler) -> list[tuple[int, .
     Activating a robot that would not move is allowed (it stays where it is). Anything else is
     :class:`InvalidInput` naming the text, the round (1-based) and what was expected.
     """
-    if scheduler is Scheduler.ASYNC:
-        raise Unsupported("scheduler='async': not implemented yet; expected one of ssync, fsync, centralized")
+    rounds_of = round_scheduler(scheduler)
     expected = _schedule_expected(n)
 
     def bad(why: str) -> InvalidInput:
@@ -196,7 +172,7 @@ def parse_schedule(text: str, n: int, scheduler: Scheduler) -> list[tuple[int, .
                     raise bad(f"round {k} names robot {i} twice")
                 seen.append(i)
             active = tuple(sorted(seen))
-        why = _scheduler_allows(scheduler, active, n)
+        why = rounds_of.forbids(active, n)
         if why is not None:
             raise InvalidInput(f"schedule={text!r}: round {k} {why}")
         rounds.append(active)

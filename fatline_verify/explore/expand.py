@@ -14,6 +14,7 @@ from typing import Protocol
 import numpy as np
 
 from ..options import Scheduler
+from ..schedulers import round_scheduler
 
 
 @dataclass(frozen=True, slots=True)
@@ -45,19 +46,6 @@ class Engine(Protocol):
 
 
 def activation_masks(enabled: int, n: int, scheduler: Scheduler) -> list[int]:
-    """The activation sets a state's scheduler offers, as bitmasks, in increasing order.
-
-    ssync: every non-empty subset of the enabled robots (activating an idle robot is a self-loop);
-    fsync: all robots at once; centralized: one enabled robot.
-    """
-    if enabled == 0:
-        return []
-    if scheduler is Scheduler.FSYNC:
-        return [enabled]
-    if scheduler is Scheduler.CENTRALIZED:
-        return [1 << i for i in range(n) if enabled >> i & 1]
-    out, sub = [], enabled
-    while sub:
-        out.append(sub)
-        sub = (sub - 1) & enabled
-    return sorted(out)
+    """The activation sets a state's scheduler offers, as bitmasks, in increasing order
+    (:meth:`fatline_verify.schedulers.RoundScheduler.masks`)."""
+    return round_scheduler(scheduler).masks(enabled, n)

@@ -20,9 +20,10 @@ import numpy as np
 
 from ..algorithm import decide
 from ..config import Model
-from ..options import Goal, Scheduler
+from ..options import Goal
 from ..properties import FLAG, Lemma
 from ..schedule import closest_dist2, collides
+from ..schedulers import round_scheduler
 from .expand import Expansion
 from .lattice import connected
 from .scalar import require_runnable
@@ -232,13 +233,7 @@ class FastEngine:
         goal = self._goal(states)
 
         all_masks = np.arange(1, 1 << n, dtype=np.int64)
-        if self.scheduler is Scheduler.FSYNC:
-            valid = (all_masks[None, :] == enabled[:, None]) & (enabled[:, None] != 0)
-        elif self.scheduler is Scheduler.CENTRALIZED:
-            single = (all_masks & (all_masks - 1)) == 0
-            valid = ((all_masks[None, :] & ~enabled[:, None]) == 0) & single[None, :]
-        else:
-            valid = (all_masks[None, :] & ~enabled[:, None]) == 0
+        valid = round_scheduler(self.scheduler).valid(all_masks, enabled)
         src, col = np.nonzero(valid)
         mask = all_masks[col]
         active = (mask[:, None] & bits[None, :]) != 0  # (t, n)

@@ -9,10 +9,10 @@ from __future__ import annotations
 import numpy as np
 
 from ..config import Model
-from ..errors import Unsupported
 from ..options import Scheduler
 from ..properties import FLAG, Lemma
 from ..schedule import Collision, Disconnection, RmaMoved, decide_all, play_round
+from ..schedulers import round_scheduler
 from ..swarm import is_goal
 from .expand import Expansion, activation_masks
 
@@ -25,9 +25,7 @@ _FLAG_OF = {
 
 def require_runnable(model: Model) -> Scheduler:
     """The model's scheduler, if an engine can explore it."""
-    if model.options.scheduler is Scheduler.ASYNC:
-        raise Unsupported("scheduler='async': not implemented yet; expected one of ssync, fsync, centralized")
-    return model.options.scheduler
+    return round_scheduler(model.options.scheduler).kind
 
 
 class ScalarEngine:
