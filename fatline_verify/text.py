@@ -391,22 +391,18 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
     return lines
 
 
+PROVE_COLUMNS = ["lemma", "form", "rule", "verdict", "slots", "seconds", "detail", "trace"]
+
+
+def prove_row(r: dict[str, Any], trace: str) -> list[str]:
+    """One ``results.json`` row as table cells (``trace``: how the page or terminal shows the trace)."""
+    return [r["lemma"], r["form"], r["rule"], r["verdict"], str(r["slots"]), f"{r['seconds']:.1f}", r["reason"], trace]
+
+
 def prove_lines(model: Any, results: list[dict[str, Any]], out: Any) -> list[str]:
     """The summary of ``fatline prove``: one line per results row."""
-    rows = [
-        [
-            r["lemma"],
-            r["form"],
-            r["rule"],
-            r["verdict"],
-            str(r["slots"]),
-            f"{r['seconds']:.1f}",
-            r["reason"],
-            r.get("trace") or "",
-        ]
-        for r in results
-    ]
+    rows = [prove_row(r, r.get("trace") or "") for r in results]
     lines = [f"model {model.describe()}", ""]
-    lines += table(["lemma", "form", "rule", "verdict", "slots", "seconds", "detail", "trace"], rows)
+    lines += table(PROVE_COLUMNS, rows)
     lines += ["", f"obligations (SMT-LIB2, each with its any-size argument) and results.json in {out}"]
     return lines

@@ -16,7 +16,7 @@ from typing import Any
 
 from ..options import CATALOGUE
 from ..properties import Lemma
-from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, violation_line
+from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, prove_row, violation_line
 from .data import ModelReport
 
 RANK = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
@@ -171,16 +171,7 @@ def _search_rows(report: ModelReport) -> list[list[str]]:
 
 def _prove_rows(report: ModelReport) -> list[list[str]]:
     return [
-        [
-            r["lemma"],
-            r["form"],
-            r["rule"],
-            r["verdict"],
-            str(r["slots"]),
-            f"{r['seconds']:.1f}",
-            r["reason"],
-            f"[trace](../traces/{r['trace'].split('/')[-1]})" if r.get("trace") else "",
-        ]
+        prove_row(r, f"[trace](../traces/{r['trace'].split('/')[-1]})" if r.get("trace") else "")
         for r in report.prove["obligations"]
     ]
 
