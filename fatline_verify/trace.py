@@ -23,6 +23,7 @@ import jsonschema
 from .config import Model, model_from_mapping, model_to_mapping
 from .errors import FatlineError, InvalidTrace, TraceDidNotReproduce
 from .numbers import Number, Point, format_number, parse_number
+from .outputs import write_json
 from .schedule import (
     Collision,
     Disconnection,
@@ -193,14 +194,6 @@ def derive_violation(run: Run, rounds: list[dict[str, Any]], focus: str | None) 
 def _loop_meets_goal(run: Run) -> bool:
     assert run.loop_start is not None
     return any(is_goal(run.state_at(k), run.model) for k in range(run.loop_start, len(run.rounds)))
-
-
-def write_json(path: Path, data: Any) -> None:
-    """Write JSON atomically (a temporary file, then a rename): a reader never sees half a file."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(json.dumps(data, indent=1) + "\n", encoding="utf-8")
-    tmp.replace(path)
 
 
 def write_trace(doc: dict[str, Any], path: Path) -> None:
