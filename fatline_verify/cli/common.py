@@ -35,12 +35,8 @@ class ArgumentError(Exception):
 
 
 _REWRITES: list[tuple[re.Pattern[str], Callable[[re.Match[str]], str]]] = [
-    (
-        re.compile(r"^argument (?:-\w, )?--?([\w-]+)(?:/[^:]*)?: invalid choice: '(.*)' \(choose from (.*)\)$"),
-        lambda m: f"{m[1]}={m[2]!r}: expected one of {m[3].replace(chr(39), '')}",
-    ),
-    (
-        re.compile(r"^argument (\w+): invalid choice: '(.*)' \(choose from (.*)\)$"),
+    (  # an option (--engine) or a positional (COMMAND) with a choice it does not offer
+        re.compile(r"^argument (?:-\w, )?-{0,2}([\w-]+)(?:/[^:]*)?: invalid choice: '(.*)' \(choose from (.*)\)$"),
         lambda m: f"{m[1]}={m[2]!r}: expected one of {m[3].replace(chr(39), '')}",
     ),
     (
