@@ -13,19 +13,19 @@ import argparse
 import time
 
 from fatline_verify.config import load_model
-from fatline_verify.explore.fast import FastEngine
 from fatline_verify.explore.initial import initial_array
-from fatline_verify.explore.scalar import ScalarEngine
 from fatline_verify.explore.search import explore
+from fatline_verify.systems import system_for
 from fatline_verify.text import table
 
 BOUNDS = [(3, 9), (4, 9), (4, 12), (5, 9)]
 
 
-def measure(model, n: int, w: int, engine_cls) -> tuple[int, int, int, float]:
+def measure(model, n: int, w: int, engine: str) -> tuple[int, int, int, float]:
     t0 = time.perf_counter()
+    system = system_for(model)
     initial = initial_array(n, (w, w), model)
-    ex = explore(model, initial, (w, w), engine_cls(model))
+    ex = explore(system, system.initial(initial), (w, w), system.engine(engine))
     return len(initial), ex.n_states, ex.n_transitions, time.perf_counter() - t0
 
 
@@ -37,12 +37,12 @@ def main() -> None:
     model = load_model(args.model)
     rows = []
     for n, w in BOUNDS:
-        init, states, trans, fast_s = measure(model, n, w, FastEngine)
+        init, states, trans, fast_s = measure(model, n, w, "fast")
         row = [f"n={n}, {w}x{w}", str(init), str(states), str(trans), f"{fast_s:.2f}", f"{states / fast_s:,.0f}"]
         if args.fast_only:
             row += ["-", "-", "-"]
         else:
-            _, s_states, _, scalar_s = measure(model, n, w, ScalarEngine)
+            _, s_states, _, scalar_s = measure(model, n, w, "scalar")
             assert s_states == states, "engines disagree"
             row += [f"{scalar_s:.2f}", f"{states / scalar_s:,.0f}", f"{scalar_s / fast_s:.1f}x"]
         rows.append(row)

@@ -19,15 +19,13 @@ import numpy as np
 
 from .config import Model
 from .errors import InvalidInput
-from .explore.expand import Engine
 from .explore.initial import initial_array
-from .explore.lattice import KeyCodec
 from .explore.liveness import fair_cycles
-from .explore.scalar import ScalarEngine, require_runnable
 from .explore.search import Exploration, explore
 from .explore.witness import lasso_run, lasso_witness, state_witness, transition_witness
 from .outputs import Kind, child
-from .properties import FLAG, SAFETY, Lemma, LemmaResult, StopReason, Verdict
+from .properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason, Verdict
+from .systems import Engine, system_for
 from .trace import approach_stuck
 
 ProgressFn = Callable[[str, int, int, str], None]
@@ -51,6 +49,7 @@ class SearchStats:
     transitions: int
     escaped: int
     violating_only: int
+    off_lattice: int
     truncated: bool
     seconds: float
 
@@ -78,18 +77,13 @@ class CheckResult:
 
 
 def make_engine(name: str, model: Model) -> Engine:
-    """The named exploration engine for ``model``."""
-    require_runnable(model)
-    if name == "scalar":
-        return ScalarEngine(model)
-    if name == "fast":
-        from .explore.fast import FastEngine
-
-        return FastEngine(model)
-    raise InvalidInput(f"engine={name!r}: expected scalar or fast")
+    """The named exploration engine for ``model``'s transition system."""
+    return system_for(model).engine(name)
 
 
-def validate_bounds(robots: tuple[int, int], window: tuple[int, int], max_states: int, engine: str = "fast") -> None:
+def validate_bounds(
+    robots: tuple[int, int], window: tuple[int, int], max_states: int, engine: str = "fast", model: Model | None = None
+) -> None:
     """Reject bounds no search can meet, naming the value."""
     if engine == "fast" and max(window) > 128:
         raise InvalidInput(
@@ -101,9 +95,10 @@ def validate_bounds(robots: tuple[int, int], window: tuple[int, int], max_states
     w, h = window
     if w < 1 or h < 1:
         raise InvalidInput(f"window={w}x{h}: expected a positive width and height")
+    system = system_for(model or Model())
     for n in range(robots[0], robots[1] + 1):
         try:
-            KeyCodec(n, window)
+            system.codec(n, window)
         except ValueError:
             raise InvalidInput(
                 f"window={w}x{h} with robots={n}: a state does not pack into 63 bits; expected a smaller window "
@@ -173,9 +168,10 @@ class CheckPlan:
         robots = model.bounds.robots if robots is None else robots
         window = model.bounds.window if window is None else window
         max_states = model.bounds.max_states if max_states is None else max_states
-        validate_bounds(robots, window, max_states, engine)
+        if engine not in ("fast", "scalar"):
+            raise InvalidInput(f"engine={engine!r}: expected scalar or fast")
+        validate_bounds(robots, window, max_states, engine, model)
         validate_resources(model, robots, window)
-        require_runnable(model)
         return cls(model, robots, window, max_states, engine, after_violation)
 
     @property
@@ -206,7 +202,8 @@ def check_robots(
 ) -> tuple[SearchStats, list[LemmaResult]]:
     """Explore every execution of ``n`` robots and give every lemma its verdict."""
     t0 = time.perf_counter()
-    engine = make_engine(engine_name, model)
+    system = system_for(model)
+    engine = system.engine(engine_name)
     if progress:
         progress(f"n={n}: enumerating initial configurations in {window[0]}x{window[1]}", 0, 0, "")
     initial = initial_array(n, window, model)
@@ -224,7 +221,15 @@ def check_robots(
         def tick(level: int, done: int, frontier: int, states: int) -> None:
             report(f"n={n}: level {level}", done, frontier, f"{states:,} states")
 
-    ex = explore(model, initial, window, engine, max_states=max_states, after_violation=after_violation, progress=tick)
+    ex = explore(
+        system,
+        system.initial(initial),
+        window,
+        engine,
+        max_states=max_states,
+        after_violation=after_violation,
+        progress=tick,
+    )
     results = lemma_verdicts(ex)
     stats = SearchStats(
         n,
@@ -235,6 +240,7 @@ def check_robots(
         ex.n_transitions,
         ex.escaped,
         ex.violating_only,
+        ex.off_lattice,
         ex.truncated,
         time.perf_counter() - t0,
     )
@@ -259,9 +265,11 @@ def _bounded(ex: Exploration, lemma: Lemma, liveness: bool) -> LemmaResult:
             ),
         )
     if liveness and ex.escaped:
-        return _result(ex, lemma, Verdict.INCONCLUSIVE, StopReason.WINDOW.describe(f"{ex.escaped} transitions"))
+        off = f", {ex.off_lattice} of them off the lattice" if ex.off_lattice else ""
+        return _result(ex, lemma, Verdict.INCONCLUSIVE, StopReason.WINDOW.describe(f"{ex.escaped} transitions{off}"))
     w, h = ex.window
-    return _result(ex, lemma, Verdict.HOLDS_WITHIN_BOUNDS, f"{ex.n} robots, window {w}x{h}, {ex.n_states} states")
+    off = f"; {ex.off_lattice} transitions off the lattice not followed" if ex.off_lattice else ""
+    return _result(ex, lemma, Verdict.HOLDS_WITHIN_BOUNDS, f"{ex.n} robots, window {w}x{h}, {ex.n_states} states{off}")
 
 
 def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
@@ -269,11 +277,11 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
     out: dict[Lemma, LemmaResult] = {}
     expanded = ex.expanded
     for lemma in SAFETY:
-        hits = np.nonzero(expanded[ex.edge_src] & ((ex.edge_flags & FLAG[lemma]) != 0))[0]
+        hits = np.nonzero(expanded[ex.edge_src] & ((ex.edge_flags & lemma.flag) != 0))[0]
         if len(hits):
-            first = hits[np.lexsort((ex.edge_mask[hits], ex.edge_src[hits]))[0]]
-            doc = transition_witness(ex, int(first), lemma.value)
-            out[lemma] = _result(ex, lemma, Verdict.VIOLATED, "a violating round", doc)
+            first = hits[np.lexsort((ex.edge_action[hits], ex.edge_src[hits]))[0]]
+            doc = transition_witness(ex, int(first), lemma)
+            out[lemma] = _result(ex, lemma, Verdict.VIOLATED, f"a violating {ex.system.step_word}", doc)
         else:
             out[lemma] = _bounded(ex, lemma, liveness=False)
 
@@ -281,35 +289,35 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
     deadlocks = np.nonzero(terminal & ~ex.goal)[0]
     if len(deadlocks):
         for lemma in (Lemma.PROGRESS, Lemma.TERMINATION):
-            doc = state_witness(ex, int(deadlocks[0]), lemma.value)
+            doc = state_witness(ex, int(deadlocks[0]), lemma)
             out[lemma] = _result(ex, lemma, Verdict.VIOLATED, "a deadlock: no robot enabled, no line", doc)
     else:
         out[Lemma.PROGRESS] = _bounded(ex, Lemma.PROGRESS, liveness=False)
         lassos = fair_cycles(ex, expanded & ~ex.goal)
         if lassos:
-            doc = lasso_witness(lasso_run(ex, lassos[0].start, lassos[0].cycle), ex, Lemma.TERMINATION.value)
+            doc = lasso_witness(lasso_run(ex, lassos[0].start, lassos[0].cycle), ex, Lemma.TERMINATION)
             out[Lemma.TERMINATION] = _result(
                 ex, Lemma.TERMINATION, Verdict.VIOLATED, "a fair cycle never forms the line", doc
             )
         else:
             out[Lemma.TERMINATION] = _bounded(ex, Lemma.TERMINATION, liveness=True)
     out[Lemma.APPROACH] = _approach(ex, terminal)
-    return [out[lemma] for lemma in Lemma]
+    return [out[lemma] for lemma in CHECKED]
 
 
 def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
     """Lemma 5: a terminal state with a robot left of the RMA, or a fair cycle where one never moves right."""
-    states = ex.states
-    off_rma = states[:, :, 0].min(axis=1) < states[:, :, 0].max(axis=1)
+    xs = ex.system.array_positions(ex.states)[:, :, 0]
+    off_rma = xs.min(axis=1) < xs.max(axis=1)
     stuck = np.nonzero(terminal & off_rma)[0]
     if len(stuck):
-        doc = state_witness(ex, int(stuck[0]), Lemma.APPROACH.value)
+        doc = state_witness(ex, int(stuck[0]), Lemma.APPROACH)
         return _result(ex, Lemma.APPROACH, Verdict.VIOLATED, "no robot can move and some are left of the RMA", doc)
     lassos = fair_cycles(ex, ex.expanded)
     for lasso in lassos[:MAX_LASSOS_TRIED]:
         run = lasso_run(ex, lasso.start, lasso.cycle)
         if approach_stuck(run):
-            doc = lasso_witness(run, ex, Lemma.APPROACH.value)
+            doc = lasso_witness(run, ex, Lemma.APPROACH)
             return _result(ex, Lemma.APPROACH, Verdict.VIOLATED, "a fair cycle where a robot never moves right", doc)
     if lassos:
         detail = f"{min(len(lassos), MAX_LASSOS_TRIED)} of {len(lassos)} fair cycles examined"
@@ -324,7 +332,7 @@ def witness_path(directory: Path, prefix: str, lemma: Lemma, robots: int) -> Pat
 
 def witness_paths(plan: CheckPlan, directory: Path, prefix: str) -> list[Path]:
     """Every file a check of ``plan`` may write into ``directory`` (checked before the run)."""
-    return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in Lemma]
+    return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in CHECKED]
 
 
 def write_witnesses(result: CheckResult, directory: Path, prefix: str) -> dict[tuple[str, int], str]:
@@ -366,6 +374,7 @@ def check_to_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dic
                 "transitions": s.transitions,
                 "escaped": s.escaped,
                 "violating_only": s.violating_only,
+                "off_lattice": s.off_lattice,
                 "truncated": s.truncated,
                 "seconds": round(s.seconds, 3),
                 "engine": s.engine,

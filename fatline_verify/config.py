@@ -18,8 +18,9 @@ from typing import Any
 
 from .errors import InvalidModel
 from .numbers import Number, Point, format_number, normalize, parse_number
-from .options import Options, Visibility, options_from_mapping
+from .options import Options, Scheduler, Visibility, options_from_mapping
 from .outputs import SLUG
+from .properties import CHECKED
 
 MODELS_DIR = Path(__file__).parent / "models"
 """Where the shipped model files live (``models/`` at the top of the repository links here)."""
@@ -36,6 +37,9 @@ class Parameters:
     rad_v: Number = 4
     q: int = 1
     delta: Number = Fraction(21, 10)
+    async_steps: int = 2
+    """ASYNC only: the move steps a move takes (positions exact on a lattice this many times finer).
+    1: moves are atomic but snapshots may be stale; 2: a robot may also be seen halfway; ..."""
 
     def __post_init__(self) -> None:
         if not isinstance(self.q, int) or isinstance(self.q, bool) or self.q < 1:
@@ -49,6 +53,12 @@ class Parameters:
             raise InvalidModel(
                 f"rad_v={format_number(self.rad_v)} with q={self.q}: expected rad_v * q to be an integer"
             )
+        if (
+            not isinstance(self.async_steps, int)
+            or isinstance(self.async_steps, bool)
+            or not 1 <= self.async_steps <= 16
+        ):
+            raise InvalidModel(f"async_steps={self.async_steps!r}: expected a whole number of move steps, 1..16")
         if self.delta <= 2:
             raise InvalidModel(f"delta={format_number(self.delta)}: expected delta > 2 (the paper: 'delta > 2 units')")
 
@@ -132,9 +142,9 @@ class Model:
 
 
 _TOP_KEYS = {"name", "description", "parameters", "options", "bounds", "expected"}
-_LEMMAS = ("connectivity", "no-collision", "progress", "rma-fixed", "approach", "termination")
+_LEMMAS = tuple(lemma.value for lemma in CHECKED)
 _VERDICTS = ("VIOLATED", "HOLDS_WITHIN_BOUNDS", "PROVED", "INCONCLUSIVE")
-_PARAM_KEYS = {"rad_v", "q", "delta"}
+_PARAM_KEYS = {"rad_v", "q", "delta", "async_steps"}
 _BOUND_KEYS = {"robots", "window", "max_states"}
 
 
@@ -186,8 +196,9 @@ def model_from_mapping(data: dict[str, object], *, source: str = "", default_nam
                 params[key] = parse_number(params_raw[key], name=key, allow_decimal=True)
             except ValueError as exc:
                 raise InvalidModel(str(exc)) from None
-    if "q" in params_raw:
-        params["q"] = params_raw["q"]
+    for key in ("q", "async_steps"):
+        if key in params_raw:
+            params[key] = params_raw[key]
     parameters = Parameters(**params)  # type: ignore[arg-type]
     options = options_from_mapping(data.get("options", {}))  # type: ignore[arg-type]
     bounds_raw = data.get("bounds", {})
@@ -253,11 +264,10 @@ def load_model(spec: str | Path = "paper") -> Model:
 def model_to_mapping(model: Model) -> dict[str, object]:
     """The model as plain data (for traces and JSON results): name, every option, every parameter."""
     p = model.parameters
-    return {
-        "name": model.name,
-        "parameters": {"rad_v": format_number(p.rad_v), "q": p.q, "delta": format_number(p.delta)},
-        "options": model.options.as_dict(),
-    }
+    parameters: dict[str, object] = {"rad_v": format_number(p.rad_v), "q": p.q, "delta": format_number(p.delta)}
+    if model.options.scheduler is Scheduler.ASYNC:  # means nothing under a round scheduler
+        parameters["async_steps"] = p.async_steps
+    return {"name": model.name, "parameters": parameters, "options": model.options.as_dict()}
 
 
 def shipped_models() -> list[Path]:

@@ -172,6 +172,20 @@ def _position_at(line: Sequence[tuple[Fraction, Point]], t: Fraction) -> Point:
     return line[-1][1]
 
 
+def point_at(path: Path, t: Fraction) -> Point:
+    """Where a constant-speed traversal of ``path`` (time ``[0, 1]``) is at time ``t``, exactly."""
+    return _position_at(timeline(path), t)
+
+
+def subpath(path: Path, t0: Fraction, t1: Fraction) -> Path:
+    """The part of ``path`` traversed between times ``t0 <= t1`` at constant speed: its end points and
+    every corner strictly between them (a move step of the asynchronous scheduler sweeps exactly this)."""
+    line = timeline(path)
+    inner = [p for t, p in line if t0 < t < t1]
+    out = [point_at(path, t0), *inner, point_at(path, t1)]
+    return tuple(p for k, p in enumerate(out) if k == 0 or p != out[k - 1]) if len(out) > 1 else tuple(out)
+
+
 def paths_lockstep_dist2(p: Path, q: Path) -> Number:
     """Closest squared distance of two movers that start together, move at constant speed along
     their paths and arrive together (``timing=lockstep``).

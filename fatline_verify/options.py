@@ -128,6 +128,13 @@ class Scheduler(StrEnum):
     ASYNC = "async"
 
 
+class Motion(StrEnum):
+    """Whether the asynchronous scheduler may end a move before its destination."""
+
+    RIGID = "rigid"
+    NON_RIGID = "non-rigid"
+
+
 class Timing(StrEnum):
     """How two robots moving in the same round are timed."""
 
@@ -160,13 +167,23 @@ class OptionSpec:
     readings: dict[str, str]
     default: StrEnum
     note: str = ""
+    only_under: Scheduler | None = None
+    """The scheduler under which the option means something (``None``: every scheduler). Under the
+    others it is left out of a model's data, so it changes no fingerprint and no trace."""
 
 
-def _spec(name: str, enum: type[StrEnum], quote: str, readings: dict[str, str], note: str = "") -> OptionSpec:
+def _spec(
+    name: str,
+    enum: type[StrEnum],
+    quote: str,
+    readings: dict[str, str],
+    note: str = "",
+    only_under: Scheduler | None = None,
+) -> OptionSpec:
     default = next(iter(enum))
     if set(readings) != {m.value for m in enum}:
         raise AssertionError(f"catalogue for {name} does not describe every reading")
-    return OptionSpec(name, enum, quote, readings, default, note)
+    return OptionSpec(name, enum, quote, readings, default, note, only_under)
 
 
 CATALOGUE: dict[str, OptionSpec] = {
@@ -329,8 +346,29 @@ CATALOGUE: dict[str, OptionSpec] = {
                 "ssync": "every non-empty set of robots, one shared snapshot",
                 "fsync": "every robot, every round",
                 "centralized": "one robot a round",
-                "async": "stale snapshots (selectable, not yet implemented by any engine)",
+                "async": "one event at a time: an idle robot looks and computes on the current positions (a "
+                "moving robot is seen where it is), a moving robot takes one of async_steps move steps; "
+                "snapshots may be stale",
             },
+            note="async in full: events L<i> (robot i looks and computes; if it would move it starts moving), "
+            "M<i> (one move step: 1/K of its path at constant speed, an L-shaped path by arc length) and, under "
+            "motion=non-rigid, S<i> (the move ends here, after at least one step); K = the model parameter "
+            "async_steps (default 2; 1 = atomic moves but stale looks, 2 = robots can be seen halfway), "
+            "positions exact on a K-times finer lattice; collision is judged per move step, the swept part "
+            "of the path against every other robot where it is now; connectivity and the RMA on every "
+            "state; fairness: in a fair cycle every robot that is moving, or idle and would move, takes an "
+            "event (or is disabled somewhere on the cycle)",
+        ),
+        _spec(
+            "motion",
+            Motion,
+            "The robots do not stop before reaching its destination",
+            {
+                "rigid": "every move goes to its destination (in async_steps steps)",
+                "non-rigid": "the scheduler may end a move after any of its steps, at least one",
+            },
+            note="asynchronous scheduler only: a round's move is always rigid",
+            only_under=Scheduler.ASYNC,
         ),
         _spec(
             "timing",
@@ -385,6 +423,7 @@ class Options:
     scenario4_drop: Scenario4Drop = Scenario4Drop.LITERAL
     scenario4_free_path: Scenario4FreePath = Scenario4FreePath.OFF
     scheduler: Scheduler = Scheduler.SSYNC
+    motion: Motion = Motion.RIGID
     timing: Timing = Timing.ANY_SPEED
     contact: Contact = Contact.TOUCH_ALLOWED
     goal: Goal = Goal.VERTICAL_LINE
@@ -395,12 +434,17 @@ class Options:
         return replace(self, **parsed)
 
     def as_dict(self) -> dict[str, str]:
-        """Every option and its reading, as text, in catalogue order."""
-        return {name: str(getattr(self, name)) for name in CATALOGUE}
+        """Every option that means something under this scheduler and its reading, as text, in catalogue
+        order."""
+        return {
+            name: str(getattr(self, name))
+            for name, spec in CATALOGUE.items()
+            if spec.only_under is None or spec.only_under is self.scheduler
+        }
 
     def differences(self, other: Options | None = None) -> dict[str, str]:
         """The options whose reading differs from ``other`` (default: from the defaults)."""
-        base = (other or Options()).as_dict()
+        base = {name: str(getattr(other or Options(), name)) for name in CATALOGUE}
         return {k: v for k, v in self.as_dict().items() if base[k] != v}
 
 

@@ -17,8 +17,21 @@ from enum import StrEnum
 from typing import Any
 
 
+class Judged(StrEnum):
+    """Where a lemma is decided: on one step of the transition system, on one state, or on the
+    explored graph (reachable terminal states and fair cycles)."""
+
+    STEP = "step"
+    STATE = "state"
+    GRAPH = "graph"
+
+
 class Lemma(StrEnum):
-    """The checked lemmas, in report order."""
+    """The lemmas, checked ones in report order (:data:`CHECKED`), then the proof-only refinement.
+
+    Everything else about a lemma — where it is judged, its violation bit, the paper's words — is
+    in :data:`SPECS`; no lemma name is spelled as a string anywhere else.
+    """
 
     CONNECTIVITY = "connectivity"
     NO_COLLISION = "no-collision"
@@ -26,13 +39,64 @@ class Lemma(StrEnum):
     RMA_FIXED = "rma-fixed"
     APPROACH = "approach"
     TERMINATION = "termination"
+    CONNECTIVITY_EDGE = "connectivity-edge"
+
+    @property
+    def spec(self) -> LemmaSpec:
+        """This lemma's row of :data:`SPECS`."""
+        return SPECS[self]
+
+    @property
+    def judged(self) -> Judged:
+        return SPECS[self].judged
+
+    @property
+    def flag(self) -> int:
+        """The bit of a step lemma in a transition's violation flags (0 for the others)."""
+        return SPECS[self].flag
 
 
-SAFETY = (Lemma.CONNECTIVITY, Lemma.NO_COLLISION, Lemma.RMA_FIXED)
-"""Lemmas about a single round; a violating round carries the witness."""
+@dataclass(frozen=True, slots=True)
+class LemmaSpec:
+    """One row of the lemma table."""
 
-FLAG = {Lemma.NO_COLLISION: 1, Lemma.CONNECTIVITY: 2, Lemma.RMA_FIXED: 4}
-"""Bit of each round-level lemma in a transition's violation flags."""
+    judged: Judged
+    flag: int
+    paper: str
+    checked: bool = True
+    """Whether ``fatline check`` gives it a verdict (``connectivity-edge`` is the prover's refinement)."""
+
+
+SPECS: dict[Lemma, LemmaSpec] = {
+    Lemma.CONNECTIVITY: LemmaSpec(Judged.STEP, 2, "Lemma 1: The connectivity graph G remains connected."),
+    Lemma.NO_COLLISION: LemmaSpec(Judged.STEP, 1, "Lemma 4: The robots never collide."),
+    Lemma.PROGRESS: LemmaSpec(
+        Judged.STATE,
+        0,
+        "Lemma 2: There exists always a robot which will move unless the robots in R forms a straight line.",
+    ),
+    Lemma.RMA_FIXED: LemmaSpec(Judged.STEP, 4, "Lemma 3: None of the robots ever crosses the RMA of the set of robot."),
+    Lemma.APPROACH: LemmaSpec(Judged.GRAPH, 0, "Lemma 5: Each robot will move closer to RMA in finite time interval."),
+    Lemma.TERMINATION: LemmaSpec(
+        Judged.GRAPH, 0, "Lemma 6 + Theorem: All the robots in R will be on the RMA in finite time."
+    ),
+    Lemma.CONNECTIVITY_EDGE: LemmaSpec(
+        Judged.STEP,
+        0,
+        "Proof of Lemma 1: every robot a mover saw before its move still sees it after (an edge is lost "
+        "while G stays connected: the proof's claim fails, the lemma may not).",
+        checked=False,
+    ),
+}
+
+CHECKED: tuple[Lemma, ...] = tuple(lemma for lemma in Lemma if SPECS[lemma].checked)
+"""The lemmas the checker gives verdicts, in report order."""
+
+SAFETY: tuple[Lemma, ...] = tuple(lemma for lemma in CHECKED if SPECS[lemma].judged is Judged.STEP)
+"""Lemmas about a single step; a violating step carries the witness."""
+
+FLAG = {lemma: SPECS[lemma].flag for lemma in SAFETY}
+"""Bit of each step lemma in a transition's violation flags."""
 
 
 class Verdict(StrEnum):

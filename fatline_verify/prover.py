@@ -29,7 +29,7 @@ from typing import Any, cast
 from .algorithm import Rule
 from .config import Model
 from .options import Scheduler, Uncovered
-from .properties import Verdict
+from .properties import Lemma, Verdict
 from .schedule import Collision, decide_all, lost_edges, play_round
 from .schedulers import round_scheduler
 from .simulate import Outcome, Run, outcome_after
@@ -43,7 +43,7 @@ from .trace import replayed_document
 class ProofResult:
     """One obligation's verdict."""
 
-    lemma: str
+    lemma: Lemma
     form: str
     rule: str
     verdict: Verdict
@@ -63,7 +63,7 @@ def rules_for(model: Model) -> list[Rule]:
 
 
 def replay_answer(
-    model: Model, lemma: str, form: str, rule: Rule, points: tuple[tuple[Fraction, Fraction], ...]
+    model: Model, lemma: Lemma, form: str, rule: Rule, points: tuple[tuple[Fraction, Fraction], ...]
 ) -> tuple[dict[str, Any], bool] | str:
     """Replay a sat model; return (trace, is_initial) or the reason it does not reproduce."""
     state = ((0, 0), *(model.to_lattice(p) for p in points))
@@ -74,21 +74,23 @@ def replay_answer(
     if form == "two-movers" and not decisions[1].moves:
         return "the second robot does not move"
     result = play_round(state, active, model, decisions)
-    if lemma == "no-collision":
+    focus: Lemma
+    if lemma == Lemma.NO_COLLISION:
         if not any(isinstance(v, Collision) and v.robots == (0, 1) for v in result.violations):
             return "r and robot 1 do not collide in the replayed round"
-        focus = "no-collision"
+        focus = Lemma.NO_COLLISION
     else:
         if not any(pair == (0, 1) for pair, _ in lost_edges(result.before, result.after, model)):
             return "r and robot 1 keep their edge in the replayed round"
-        focus = "connectivity" if any(v.lemma == "connectivity" for v in result.violations) else "connectivity-edge"
+        disconnected = any(v.lemma == Lemma.CONNECTIVITY for v in result.violations)
+        focus = Lemma.CONNECTIVITY if disconnected else Lemma.CONNECTIVITY_EDGE
     run = Run(model, state, (result,), outcome_after(result.after, result, model) or Outcome.ROUND_LIMIT)
     origin = {"tool": "fatline prove", "lemma": lemma, "form": form, "rule": rule.value}
     return replayed_document(run, origin, focus), not initial_problems(state, model)
 
 
 def prove_one(
-    model: Model, lemma: str, form: str, rule: Rule, *, slots: int, timeout: float, out: Path | None
+    model: Model, lemma: Lemma, form: str, rule: Rule, *, slots: int, timeout: float, out: Path | None
 ) -> ProofResult:
     """Decide one obligation (see the module docstring for the verdict rules).
 
@@ -146,13 +148,15 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
     full = ob.build_global(model, slots)
     path = ""
     if out is not None:
-        target = out / "connectivity" / "global.smt2"
+        target = out / Lemma.CONNECTIVITY.value / "global.smt2"
         ob.write(full, target)
         path = str(target)
     spent = 0.0
 
     def result(verdict: Verdict, k: int, reason: str, doc: dict[str, Any] | None = None) -> ProofResult:
-        return ProofResult("connectivity", "global", "any", verdict, k, False, spent, reason, path, doc, full.comment)
+        return ProofResult(
+            Lemma.CONNECTIVITY, "global", "any", verdict, k, False, spent, reason, path, doc, full.comment
+        )
 
     attempts = [(k, True, timeout / slots) for k in range(1, slots + 1)] + [(slots, False, timeout)]
     last = None
@@ -172,13 +176,13 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
                 Verdict.INCONCLUSIVE, k, f"encoding disagreement: activation set {active} breaks the scheduler"
             )
         run_result = play_round(state, active, model)
-        if not any(v.lemma == "connectivity" for v in run_result.violations):
+        if not any(v.lemma == Lemma.CONNECTIVITY for v in run_result.violations):
             return result(
                 Verdict.INCONCLUSIVE, k, "encoding disagreement: the replayed round keeps the graph connected"
             )
         run = Run(model, state, (run_result,), Outcome.VIOLATION)
-        origin = {"tool": "fatline prove", "lemma": "connectivity", "form": "global"}
-        doc = replayed_document(run, origin, "connectivity")
+        origin = {"tool": "fatline prove", "lemma": Lemma.CONNECTIVITY.value, "form": "global"}
+        doc = replayed_document(run, origin, Lemma.CONNECTIVITY)
         if not initial_problems(state, model):
             return result(
                 Verdict.VIOLATED, k, f"the graph splits, from an initial configuration of {k + 1} robots", doc
@@ -195,25 +199,25 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
 def _found(doc: dict[str, Any], k: int, rounded: bool) -> str:
     prop = doc["violation"]["property"]
     what = {
-        "no-collision": "collision",
-        "connectivity": "an edge is lost and the visibility graph splits (Lemma 1)",
-        "connectivity-edge": "an edge is lost, the visibility graph stays connected (the proof's claim fails)",
+        Lemma.NO_COLLISION: "collision",
+        Lemma.CONNECTIVITY: "an edge is lost and the visibility graph splits (Lemma 1)",
+        Lemma.CONNECTIVITY_EDGE: "an edge is lost, the visibility graph stays connected (the proof's claim fails)",
     }[prop]
     note = "; values rounded from algebraic numbers and re-checked" if rounded else ""
     return f"{what}, from an initial configuration of {k + 1} robots{note}"
 
 
-Task = tuple[str, str, "Rule | None"]
+Task = tuple[Lemma, str, "Rule | None"]
 """One obligation: (lemma, form, rule); rule ``None`` is the global connectivity form."""
 
 
-def tasks_for(model: Model, lemmas: tuple[str, ...] = ob.LEMMAS) -> list[Task]:
+def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = ob.LEMMAS) -> list[Task]:
     """Every obligation ``prove`` decides for ``model`` and ``lemmas``, in results order."""
     scheduler = model.options.scheduler
     forms = ob.forms_for(Scheduler.SSYNC if scheduler not in ENCODED else scheduler)
     tasks: list[Task] = [(lemma, form, rule) for lemma in lemmas for form in forms for rule in rules_for(model)]
-    if "connectivity" in lemmas:
-        tasks.append(("connectivity", "global", None))
+    if Lemma.CONNECTIVITY in lemmas:
+        tasks.append((Lemma.CONNECTIVITY, "global", None))
     return tasks
 
 
@@ -225,7 +229,7 @@ def task_key(task: Task) -> str:
 
 def prove(
     model: Model,
-    lemmas: tuple[str, ...] = ob.LEMMAS,
+    lemmas: tuple[Lemma, ...] = ob.LEMMAS,
     *,
     slots: int = 3,
     timeout: float = 10.0,

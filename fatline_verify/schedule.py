@@ -19,6 +19,7 @@ from .config import Model
 from .geometry import Path, path_point_dist2, paths_any_speed_dist2, paths_lockstep_dist2
 from .numbers import Number, Point
 from .options import Contact, Timing
+from .properties import Lemma
 from .swarm import State, is_connected, visibility_graph
 
 
@@ -31,7 +32,7 @@ class Collision:
     """The exact squared closest centre distance in lattice units."""
     both_moved: bool
 
-    lemma: ClassVar[str] = "no-collision"
+    lemma: ClassVar[Lemma] = Lemma.NO_COLLISION
 
 
 @dataclass(frozen=True, slots=True)
@@ -41,7 +42,7 @@ class Disconnection:
     components: tuple[tuple[int, ...], ...]
     lost_edges: tuple[tuple[int, int], ...]
 
-    lemma: ClassVar[str] = "connectivity"
+    lemma: ClassVar[Lemma] = Lemma.CONNECTIVITY
 
 
 @dataclass(frozen=True, slots=True)
@@ -52,7 +53,7 @@ class RmaMoved:
     rma_x: Number
     x_after: Number
 
-    lemma: ClassVar[str] = "rma-fixed"
+    lemma: ClassVar[Lemma] = Lemma.RMA_FIXED
 
 
 Violation = Collision | Disconnection | RmaMoved
@@ -67,6 +68,16 @@ class RoundResult:
     before: State = field(repr=False)
     after: State
     violations: tuple[Violation, ...] = ()
+
+    @property
+    def source(self) -> State:
+        """The state before the round (a round system's state is the positions)."""
+        return self.before
+
+    @property
+    def target(self) -> State:
+        """The state after the round."""
+        return self.after
 
 
 def snapshot(state: Sequence[Point], i: int, model: Model) -> tuple[Point, ...]:

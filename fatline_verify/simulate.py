@@ -1,26 +1,28 @@
 """Running a swarm: a seeded, fair random scheduler and the loop that stops at the first outcome;
-or an explicit schedule (:func:`parse_schedule`, :func:`play_schedule`) played round by round.
+or an explicit schedule (:func:`parse_schedule`, :func:`play_schedule`) played step by step.
 
-Fairness: under ``ssync`` each enabled robot is activated with probability 1/2 (at least one a
-round), and one that has been enabled but idle for ``n`` rounds in a row is activated for sure; under
-``centralized`` the robot waiting longest goes when someone has waited ``n`` rounds. So no enabled
-robot waits forever, as the paper's "the robots do not stay idle for infinite time" asks.
+Both work on the model's transition system (:mod:`fatline_verify.systems`): a step is a round under
+the round schedulers and one event under ``async``. Fairness: under ``ssync`` each enabled robot is
+activated with probability 1/2 (at least one a round), and one that has been enabled but idle for
+``n`` rounds in a row is activated for sure; under ``centralized`` the robot waiting longest goes when
+someone has waited ``n`` rounds; under ``async`` an enabled robot is picked uniformly, and one that
+has waited ``2n`` events goes next. So no enabled robot waits forever, as the paper's "the robots do
+not stay idle for infinite time" asks.
 """
 
 from __future__ import annotations
 
 import random
-import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
+from typing import Any
 
-from .algorithm import Decision
 from .config import Model
-from .errors import InvalidInput
 from .options import Scheduler
-from .schedule import RoundResult, decide_all, enabled, play_round
-from .schedulers import round_scheduler
-from .swarm import State, is_goal, require_initial
+from .swarm import State, require_initial
+from .systems import TransitionSystem, system_for
+from .systems.base import Step
 
 
 class Outcome(StrEnum):
@@ -41,7 +43,8 @@ class Run:
 
     model: Model = field(repr=False)
     initial: State
-    rounds: tuple[RoundResult, ...] = field(repr=False)
+    rounds: tuple[Step, ...] = field(repr=False)
+    """The steps played: rounds, or asynchronous events."""
     outcome: Outcome
     loop_start: int | None = None
     """For a lasso: the number of rounds before the loop; the loop is every round after them."""
@@ -57,148 +60,93 @@ class Run:
 
 
 def outcome_after(
-    state: State, last: RoundResult | None, model: Model, decisions: dict[int, Decision] | None = None
+    state: Any, last: Step | None, model: Model, system: TransitionSystem | None = None
 ) -> Outcome | None:
-    """The outcome if the run ends at ``state`` (reached by ``last``), else ``None``.
+    """The outcome if the run ends at ``state`` (a state of ``system``, by default the model's) reached by
+    ``last``, else ``None``.
 
-    A violating round ends the run; then the goal ("form a straight line") ends it; then a state
-    where no robot is enabled is a deadlock (Lemma "there exists always a robot which will move
-    unless the robots in R forms a straight line").
+    A violating step ends the run; then the goal ("form a straight line", every robot at rest) ends it;
+    then a state where no robot is enabled is a deadlock (Lemma "there exists always a robot which will
+    move unless the robots in R forms a straight line").
     """
     if last is not None and last.violations:
         return Outcome.VIOLATION
-    if is_goal(state, model):
+    system = system or system_for(model)
+    if system.is_goal(state):
         return Outcome.GOAL
-    if not enabled(decide_all(state, model) if decisions is None else decisions):
+    if not system.enabled(state):
         return Outcome.DEADLOCK
     return None
 
 
 class FairRandomScheduler:
-    """Chooses activation sets at random, seeded, never starving an enabled robot."""
+    """Chooses actions at random, seeded, never starving an enabled robot (the system's own fair choice)."""
 
-    def __init__(self, kind: Scheduler, seed: int, n: int) -> None:
-        self.scheduler = round_scheduler(kind)
-        self.kind = kind
+    def __init__(self, system: TransitionSystem, seed: int, n: int) -> None:
+        self.system = system
         self.rng = random.Random(seed)
-        self.n = n
         self.waiting = [0] * n
 
-    def choose(self, candidates: tuple[int, ...]) -> tuple[int, ...]:
-        """The robots to activate among the enabled ``candidates`` (non-empty)."""
-        chosen = self.scheduler.choose(self.rng, candidates, self.waiting, self.n)
-        for i in range(self.n):
-            self.waiting[i] = 0 if (i in chosen or i not in candidates) else self.waiting[i] + 1
-        return tuple(sorted(chosen))
+    def choose(self, state: Any) -> Any:
+        """The next action in ``state`` (some robot is enabled)."""
+        return self.system.choose(self.rng, state, self.waiting)
 
 
 def simulate(
     initial: State, model: Model, *, scheduler: Scheduler | None = None, seed: int = 0, max_rounds: int = 100
 ) -> Run:
-    """Run the swarm from ``initial`` until the goal, a deadlock, a violation or ``max_rounds``."""
+    """Run the swarm from ``initial`` until the goal, a deadlock, a violation or ``max_rounds`` steps."""
     require_initial(initial, model)
-    chooser = FairRandomScheduler(scheduler or model.options.scheduler, seed, len(initial))
-    state, last = initial, None
-    rounds: list[RoundResult] = []
+    system = system_for(model, scheduler)
+    chooser = FairRandomScheduler(system, seed, len(initial))
+    state, last = system.start(initial), None
+    steps: list[Step] = []
     while True:
-        decisions = decide_all(state, model)
-        outcome = outcome_after(state, last, model, decisions)
+        outcome = outcome_after(state, last, model, system)
         if outcome is not None:
             break
-        if len(rounds) >= max_rounds:
+        if len(steps) >= max_rounds:
             outcome = Outcome.ROUND_LIMIT
             break
-        active = chooser.choose(enabled(decisions))
-        last = play_round(state, active, model, decisions)
-        rounds.append(last)
-        state = last.after
-    return Run(model, initial, tuple(rounds), outcome)
+        last = system.play(state, chooser.choose(state))
+        steps.append(last)
+        state = last.target
+    return Run(model, initial, tuple(steps), outcome)
 
 
 # --- explicit schedules -------------------------------------------------------------------------------
 
-MAX_SCHEDULE_ROUNDS = 1_000_000
 
-_INDEX = re.compile(r"[0-9]+")
+def parse_schedule(text: str, n: int, scheduler: Scheduler, model: Model | None = None) -> list[Any]:
+    """The actions of ``text`` for ``n`` robots under ``scheduler``: rounds ``"0;1,2;all"`` for the round
+    schedulers, events ``"L0;M0;L1"`` for ``async``
+    (:meth:`~fatline_verify.systems.base.TransitionSystem.parse_schedule`).
 
-
-def _schedule_expected(n: int) -> str:
-    robots = "0" if n == 1 else f"0..{n - 1}"
-    return (
-        f"expected rounds separated by ';', each 'all' or robot indices {robots} (in --init order) "
-        "separated by ',', e.g. '0;1,2;all'"
-    )
-
-
-def parse_schedule(text: str, n: int, scheduler: Scheduler) -> list[tuple[int, ...]]:
-    """The activation sets of ``text`` (``"0;1,2;all"``) for ``n`` robots, each checked against
-    ``scheduler``: ``centralized`` one robot a round, ``fsync`` every robot, ``ssync`` any non-empty set.
-
-    Robot indices are positions in the initial configuration (0-based); ``all`` is every robot.
-    Activating a robot that would not move is allowed (it stays where it is). Anything else is
-    :class:`InvalidInput` naming the text, the round (1-based) and what was expected.
+    Robot indices are positions in the initial configuration (0-based). Anything else is
+    :class:`InvalidInput` naming the text, the step (1-based) and what was expected.
     """
-    rounds_of = round_scheduler(scheduler)
-    expected = _schedule_expected(n)
-
-    def bad(why: str) -> InvalidInput:
-        return InvalidInput(f"schedule={text!r}: {why}; {expected}")
-
-    if not text.strip():
-        raise bad("no rounds")
-    parts = text.split(";")
-    if len(parts) > MAX_SCHEDULE_ROUNDS:
-        raise bad(f"{len(parts)} rounds, more than {MAX_SCHEDULE_ROUNDS}")
-    rounds: list[tuple[int, ...]] = []
-    for k, part in enumerate(parts, start=1):
-        tokens = [t.strip() for t in part.split(",")]
-        if tokens == [""]:
-            raise bad(f"round {k} is empty")
-        if any(t.lower() == "all" for t in tokens):
-            if len(tokens) != 1:
-                raise bad(f"round {k} mixes 'all' with other robots ({part.strip()!r})")
-            active = tuple(range(n))
-        else:
-            seen: list[int] = []
-            for t in tokens:
-                if not t:
-                    raise bad(f"round {k} has an empty robot index ({part.strip()!r})")
-                if not _INDEX.fullmatch(t):
-                    raise bad(f"round {k}: {t!r} is not a robot index")
-                i = int(t)
-                if i >= n:
-                    raise bad(f"round {k}: robot {i} does not exist (there are {n} robots)")
-                if i in seen:
-                    raise bad(f"round {k} names robot {i} twice")
-                seen.append(i)
-            active = tuple(sorted(seen))
-        why = rounds_of.forbids(active, n)
-        if why is not None:
-            raise InvalidInput(f"schedule={text!r}: round {k} {why}")
-        rounds.append(active)
-    return rounds
+    return system_for(model or Model(), scheduler).parse_schedule(text, n)
 
 
-def play_schedule(initial: State, model: Model, rounds: list[tuple[int, ...]] | tuple[tuple[int, ...], ...]) -> Run:
-    """Play exactly the activation sets ``rounds`` from ``initial``, one per round.
+def play_schedule(initial: State, model: Model, actions: Sequence[Any]) -> Run:
+    """Play exactly ``actions`` from ``initial``, one per step, under the model's scheduler.
 
-    Only a violating round ends the run early (as in every trace); past the goal or a deadlock the
-    remaining rounds are still played (a robot that is activated but not enabled stays). The
-    outcome is judged on the last state, as :func:`fatline_verify.trace.replay` judges it:
-    ``VIOLATION``, ``GOAL``, ``DEADLOCK``, or else ``ROUND_LIMIT`` (the schedule ran out).
+    Only a violating step ends the run early (as in every trace); past the goal or a deadlock the
+    remaining steps are still played (a robot that is activated but not enabled stays). The outcome is
+    judged on the last state, as :func:`fatline_verify.trace.replay` judges it: ``VIOLATION``, ``GOAL``,
+    ``DEADLOCK``, or else ``ROUND_LIMIT`` (the schedule ran out). An action that cannot be played where
+    it comes (an asynchronous look of a moving robot) is :class:`InvalidInput`.
     """
     require_initial(initial, model)
-    n = len(initial)
-    for k, active in enumerate(rounds, start=1):
-        if not active or any(not 0 <= i < n for i in active) or len(set(active)) != len(active):
-            raise InvalidInput(f"schedule: round {k} activates {list(active)}; {_schedule_expected(n)}")
-    state, last = initial, None
-    played: list[RoundResult] = []
-    for active in rounds:
-        last = play_round(state, active, model)
+    system = system_for(model)
+    state, last = system.start(initial), None
+    played: list[Step] = []
+    for k, action in enumerate(actions, start=1):
+        system.check_action(state, action, k)
+        last = system.play(state, action)
         played.append(last)
-        state = last.after
+        state = last.target
         if last.violations:
             break
-    outcome = outcome_after(state, last, model) or Outcome.ROUND_LIMIT
+    outcome = outcome_after(state, last, model, system) or Outcome.ROUND_LIMIT
     return Run(model, initial, tuple(played), outcome)

@@ -21,6 +21,7 @@ from .algorithm import Decision, Rule
 from .config import Model
 from .numbers import Point, format_number, parse_number
 from .options import CATALOGUE, Options
+from .properties import CHECKED, Lemma
 from .schedule import decide_all
 from .trace import trace_model
 
@@ -112,32 +113,32 @@ def violation_line(v: dict[str, Any], style: NumberStyle = TEXT) -> str:
     """One line for a violation record of a trace."""
     prop = v["property"]
     robots = " ".join(f"r{i}" for i in v["robots"])
-    if prop == "no-collision":
+    if prop == Lemma.NO_COLLISION:
         how = "both moving" if v.get("both_moved") else "one moving"
         closest = style.area(v["closest_distance2"])
         return f"{prop}: {robots} collide ({how}); closest squared centre distance {closest} (discs touch at 4)"
-    if prop == "connectivity":
+    if prop == Lemma.CONNECTIVITY:
         edges = ", ".join(
             f"r{a}-r{b} (distance^2 {style.area(d)})"
             for (a, b), d in zip(v["lost_edges"], v["distance2_after"], strict=True)
         )
         comps = " | ".join(" ".join(f"r{i}" for i in c) for c in v["components"])
         return f"{prop}: visibility graph split into {comps}; lost {edges}"
-    if prop == "rma-fixed":
+    if prop == Lemma.RMA_FIXED:
         return (
             f"{prop}: {robots} went from the right-most axis x={style.coordinate(v['rma_x'])} "
             f"to x={style.coordinate(v['x_after'])}"
         )
-    if prop == "connectivity-edge":
+    if prop == Lemma.CONNECTIVITY_EDGE:
         (a, b), d2 = v["robots"], v["distance2_after"][0]
         return (
             f"{prop}: r{a} and r{b} no longer see each other (distance^2 {style.area(d2)}); the graph stays connected"
         )
-    if prop == "progress":
+    if prop == Lemma.PROGRESS:
         return f"{prop}: deadlock: no robot is enabled and the robots are not on a line"
-    if prop == "termination":
+    if prop == Lemma.TERMINATION:
         return f"{prop}: this execution never forms the line (a deadlock or a fair cycle)"
-    if prop == "approach":
+    if prop == Lemma.APPROACH:
         return f"{prop}: {robots} left of the right-most axis never move right again"
     return f"{prop}: {robots}"
 
@@ -230,17 +231,31 @@ def _positions_line(points: list[Any]) -> str:
     return "  ".join(f"r{i} {_pt(p)}" for i, p in enumerate(points))
 
 
+_EVENT_TEXT = {
+    "look": "r{robot} looks and computes",
+    "move": "r{robot} takes a move step",
+    "stop": "r{robot} ends its move here",
+}
+
+
 def trace_lines(doc: dict[str, Any], model: Model | None = None) -> list[str]:
     """The rounds of a trace document, one block per round, and its outcome; for a deadlock, why
     each robot stays (under ``model``, by default the trace's own)."""
     lines = ["start: " + _positions_line(doc["initial"])]
+    word = "round"
     for k, rnd in enumerate(doc["rounds"], start=1):
-        lines.append(f"round {k}: active " + " ".join(f"r{i}" for i in rnd["active"]))
+        if "event" in rnd:
+            word = "event"
+            lines.append(f"event {k}: {_EVENT_TEXT[rnd['event']].format(robot=rnd['robot'])}")
+        else:
+            lines.append(f"round {k}: active " + " ".join(f"r{i}" for i in rnd["active"]))
         for d in rnd["decisions"]:
             psi = f", psi_right x={coordinate_text(d['psi'])}" if d.get("psi") is not None else ""
             case = _CASE_NOTE.get(d.get("case") or "", "") if d["rule"].startswith(("scenario-4", "uncovered")) else ""
             lines.append(f"  r{d['robot']} {d['rule']}{case} -> {_pt(d['destination'])}{psi}")
         lines.append("  now: " + _positions_line(rnd["positions"]))
+        for mv in rnd.get("moving", ()):
+            lines.append(f"  moving: r{mv['robot']} -> {_pt(mv['path'][-1])}, {mv['step']} of {mv['of']} steps done")
         for v in rnd["violations"]:
             lines.append("  VIOLATED " + violation_line(v))
     n = len(doc["rounds"])
@@ -251,12 +266,12 @@ def trace_lines(doc: dict[str, Any], model: Model | None = None) -> list[str]:
         "round-limit": "round limit reached: neither the goal, a deadlock nor a violation",
         "cycle": "a fair cycle: the loop below repeats forever without forming the line",
     }[doc["outcome"]]
-    lines.append(f"outcome after {n} round{'s' if n != 1 else ''}: {tail}")
+    lines.append(f"outcome after {n} {word}{'s' if n != 1 else ''}: {tail}")
     if doc["outcome"] == "deadlock":
         model = model or trace_model(doc)
         lines += ["  " + line for line in stay_lines(final_state(doc, model), model)]
     if doc.get("loop_start") is not None:
-        lines.append(f"the rounds after round {doc['loop_start']} repeat forever (the swarm returns, translated)")
+        lines.append(f"the {word}s after {word} {doc['loop_start']} repeat forever (the swarm returns, translated)")
     if doc.get("violation"):
         lines.append("witnesses " + violation_line(doc["violation"]))
     return lines
@@ -273,7 +288,8 @@ def _reading_marks(spec: Any, reading: str, chosen: dict[str, str], model: Model
 
 def explain_lines(name: str | None = None, model: Model | None = None) -> list[str]:
     """The catalogue (or one option): the quote, every reading, the default, the model's choice."""
-    chosen = (model.options if model else Options()).as_dict()
+    options = model.options if model else Options()
+    chosen = {n: str(getattr(options, n)) for n in CATALOGUE}
     names = [name] if name else list(CATALOGUE)
     lines: list[str] = []
     for n in names:
@@ -333,8 +349,6 @@ def table(headers: list[str], rows: list[list[str]]) -> list[str]:
 
 def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[str]:
     """The summary of a :class:`fatline_verify.checker.CheckResult`."""
-    from .properties import Lemma
-
     model = result.model
     w, h = result.window
     lines = [
@@ -363,7 +377,7 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
     )
     lines.append("")
     rows = []
-    for lemma in Lemma:
+    for lemma in CHECKED:
         for r in (x for x in result.results if x.lemma is lemma):
             trace = trace_paths.get((lemma.value, r.robots), "")
             witness = "" if r.witness_rounds is None else f"{r.witness_rounds} rounds"

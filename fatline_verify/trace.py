@@ -1,11 +1,15 @@
 """Versioned, schema-checked JSON traces, and replay.
 
-A trace holds the model (every option and parameter), the initial positions, and per round the
-active robots, each active robot's decision (rule, psi_right, destination), the positions after and
-the round's violations with their exact measured quantities. Positions are in robot radii.
+A trace holds the model (every option and parameter), the initial positions, and per step the
+active robots, each decision taken (rule, psi_right, destination), the positions after and the step's
+violations with their exact measured quantities. Positions are in robot radii. A step is a round
+under the round schedulers; under ``async`` it is one event (version 2): ``event`` (look, move, stop)
+and ``robot``, and after it every moving robot's path, progress and the positions it decided on.
+Version 1 (rounds only) is still read and replayed.
 
-:func:`replay` recomputes everything from the initial positions and the recorded activation sets;
-:func:`check_replay` raises :class:`TraceDidNotReproduce` naming the first value that differs.
+:func:`replay` recomputes everything from the initial positions and the recorded actions, with the
+model's transition system; :func:`check_replay` raises :class:`TraceDidNotReproduce` naming the first
+value that differs.
 """
 
 from __future__ import annotations
@@ -20,26 +24,21 @@ from typing import Any
 
 import jsonschema
 
+from .algorithm import Decision
 from .config import Model, model_from_mapping, model_to_mapping
-from .errors import FatlineError, InvalidTrace, TraceDidNotReproduce
+from .errors import FatlineError, InvalidInput, InvalidTrace, TraceDidNotReproduce
 from .numbers import Number, Point, format_number, parse_number
 from .outputs import write_json
-from .schedule import (
-    Collision,
-    Disconnection,
-    RmaMoved,
-    RoundResult,
-    Violation,
-    decide_all,
-    enabled,
-    lost_edges,
-    play_round,
-)
+from .properties import SAFETY, Lemma
+from .schedule import Collision, Disconnection, RmaMoved, RoundResult, Violation, lost_edges
 from .simulate import Outcome, Run, outcome_after
-from .swarm import State, is_goal
+from .swarm import State
+from .systems import TransitionSystem, system_for
+from .systems.base import Step
 
 FORMAT = "fatline-trace"
-VERSION = 1
+VERSION = 2
+READABLE_VERSIONS = (1, 2)
 
 
 @cache
@@ -66,7 +65,7 @@ def violation_to_json(v: Violation, model: Model, after: State) -> dict[str, Any
     """One violation with its measured quantity, in radius units."""
     if isinstance(v, Collision):
         return {
-            "property": v.lemma,
+            "property": v.lemma.value,
             "robots": list(v.robots),
             "closest_distance2": _area(model, v.closest_dist2),
             "both_moved": v.both_moved,
@@ -77,7 +76,7 @@ def violation_to_json(v: Violation, model: Model, after: State) -> dict[str, Any
             _area(model, (after[i][0] - after[j][0]) ** 2 + (after[i][1] - after[j][1]) ** 2) for i, j in v.lost_edges
         ]
         return {
-            "property": v.lemma,
+            "property": v.lemma.value,
             "robots": robots,
             "components": [list(c) for c in v.components],
             "lost_edges": [list(e) for e in v.lost_edges],
@@ -85,34 +84,61 @@ def violation_to_json(v: Violation, model: Model, after: State) -> dict[str, Any
         }
     assert isinstance(v, RmaMoved)
     return {
-        "property": v.lemma,
+        "property": v.lemma.value,
         "robots": [v.robot],
         "rma_x": format_number(Fraction(v.rma_x) / model.radius),
         "x_after": format_number(Fraction(v.x_after) / model.radius),
     }
 
 
+def decision_to_json(i: int, d: Decision, origin: Point, model: Model) -> dict[str, Any]:
+    """Robot ``i``'s decision, taken at ``origin``: rule, case, psi_right and destination (global)."""
+    ox, oy = origin
+    dest = (ox + d.destination[0], oy + d.destination[1])
+    return {
+        "robot": i,
+        "rule": str(d.rule),
+        "case": str(d.case) if d.case else None,
+        "psi": None if d.psi is None else format_number(Fraction(ox + d.psi) / model.radius),
+        "destination": _point(model, dest),
+    }
+
+
 def round_to_json(r: RoundResult, model: Model) -> dict[str, Any]:
     """One round: active set, each active robot's decision, positions after, violations."""
-    decisions = []
-    for i in r.active:
-        d = r.decisions[i]
-        ox, oy = r.before[i]
-        dest = (ox + d.destination[0], oy + d.destination[1])
-        decisions.append(
-            {
-                "robot": i,
-                "rule": str(d.rule),
-                "case": str(d.case) if d.case else None,
-                "psi": None if d.psi is None else format_number(Fraction(ox + d.psi) / model.radius),
-                "destination": _point(model, dest),
-            }
-        )
     return {
         "active": list(r.active),
-        "decisions": decisions,
+        "decisions": [decision_to_json(i, r.decisions[i], r.before[i], model) for i in r.active],
         "positions": [_point(model, p) for p in r.after],
         "violations": [violation_to_json(v, model, r.after) for v in r.violations],
+    }
+
+
+def event_to_json(e: Any, system: Any) -> dict[str, Any]:
+    """One asynchronous event (an :class:`~fatline_verify.systems.asynchronous.EventResult`): which robot did
+    what, its decision when it looked, positions after, every robot still moving (path, steps done,
+    and the positions it decided on), violations."""
+    model = system.model
+    i = e.event.robot
+    moving = [
+        {
+            "robot": j,
+            "path": [_point(model, p) for p in r.path],
+            "step": r.k,
+            "of": system.K,
+            "seen": None if r.seen is None else [_point(model, p) for p in r.seen],
+        }
+        for j, r in enumerate(e.target)
+        if r.moving
+    ]
+    return {
+        "event": e.event.kind.value,
+        "robot": i,
+        "active": [i],
+        "decisions": [decision_to_json(i, d, e.before[i], model) for i, d in e.decisions.items()],
+        "positions": [_point(model, p) for p in e.after],
+        "moving": moving,
+        "violations": [violation_to_json(v, model, e.after) for v in e.violations],
     }
 
 
@@ -120,7 +146,8 @@ def run_to_json(run: Run, origin: dict[str, Any] | None = None, focus: str | Non
     """A whole run as a trace document (schema-valid). ``focus`` names the lemma the trace witnesses
     (default: the first violation of a violating run, or ``progress`` for a deadlock)."""
     model = run.model
-    rounds = [round_to_json(r, model) for r in run.rounds]
+    system = system_for(model)
+    rounds = [system.step_to_json(r) for r in run.rounds]
     doc: dict[str, Any] = {
         "format": FORMAT,
         "version": VERSION,
@@ -145,13 +172,14 @@ def approach_stuck(run: Run) -> list[int]:
     is over). The RMA is the right-most axis of the state at hand, which is the initial one as long
     as rma-fixed holds.
     """
+    system = system_for(run.model)
     if run.loop_start is not None:
         start = run.state_at(run.loop_start)
         rma = max(p[0] for p in start)
         loop = run.rounds[run.loop_start :]
         return [i for i, p in enumerate(start) if p[0] < rma and not any(r.after[i][0] > r.before[i][0] for r in loop)]
     final = run.final
-    if enabled(decide_all(final, run.model)):
+    if system.enabled(_state_at(run, system, len(run.rounds))):
         return []
     rma = max(p[0] for p in final)
     return [i for i, p in enumerate(final) if p[0] < rma]
@@ -164,36 +192,46 @@ def derive_violation(run: Run, rounds: list[dict[str, Any]], focus: str | None) 
         if run.outcome is Outcome.VIOLATION:
             focus = rounds[-1]["violations"][0]["property"]
         elif run.outcome is Outcome.DEADLOCK:
-            focus = "progress"
+            focus = Lemma.PROGRESS
         else:
             return None
-    if focus in ("no-collision", "connectivity", "rma-fixed"):
+    try:
+        focus = Lemma(focus)
+    except ValueError:
+        raise InvalidTrace(f"violation.property={focus!r}: unknown lemma") from None
+    if focus in SAFETY:
         if run.outcome is not Outcome.VIOLATION:
             return None
         match = next((v for v in rounds[-1]["violations"] if v["property"] == focus), None)
         return None if match is None else {**match, "round": n_rounds}
-    if focus == "connectivity-edge":
+    name = focus.value
+    if focus is Lemma.CONNECTIVITY_EDGE:
         last = run.rounds[-1] if run.rounds else None
         lost = lost_edges(last.before, last.after, run.model) if last else []
         if not lost:
             return None
         (i, j), d2 = lost[0]
-        return {"property": focus, "robots": [i, j], "distance2_after": [_area(run.model, d2)], "round": n_rounds}
-    if focus == "progress":
-        return {"property": focus, "robots": [], "round": n_rounds} if run.outcome is Outcome.DEADLOCK else None
-    if focus == "termination":
+        return {"property": name, "robots": [i, j], "distance2_after": [_area(run.model, d2)], "round": n_rounds}
+    if focus is Lemma.PROGRESS:
+        return {"property": name, "robots": [], "round": n_rounds} if run.outcome is Outcome.DEADLOCK else None
+    if focus is Lemma.TERMINATION:
         if run.outcome is Outcome.DEADLOCK or (run.outcome is Outcome.CYCLE and not _loop_meets_goal(run)):
-            return {"property": focus, "robots": [], "round": n_rounds}
+            return {"property": name, "robots": [], "round": n_rounds}
         return None
-    if focus == "approach":
-        stuck = approach_stuck(run) if run.outcome in (Outcome.CYCLE, Outcome.DEADLOCK, Outcome.GOAL) else []
-        return {"property": focus, "robots": stuck, "round": n_rounds} if stuck else None
-    raise InvalidTrace(f"violation.property={focus!r}: unknown lemma")
+    assert focus is Lemma.APPROACH
+    stuck = approach_stuck(run) if run.outcome in (Outcome.CYCLE, Outcome.DEADLOCK, Outcome.GOAL) else []
+    return {"property": name, "robots": stuck, "round": n_rounds} if stuck else None
 
 
 def _loop_meets_goal(run: Run) -> bool:
     assert run.loop_start is not None
-    return any(is_goal(run.state_at(k), run.model) for k in range(run.loop_start, len(run.rounds)))
+    system = system_for(run.model)
+    return any(system.is_goal(_state_at(run, system, k)) for k in range(run.loop_start, len(run.rounds)))
+
+
+def _state_at(run: Run, system: TransitionSystem, k: int) -> Any:
+    """The system state after ``k`` steps."""
+    return run.rounds[k - 1].target if k else system.start(run.initial)
 
 
 def write_trace(doc: dict[str, Any], path: Path) -> None:
@@ -249,50 +287,47 @@ def _positions(doc_points: list[list[Any]], model: Model, where: str) -> State:
 
 
 def replay(doc: dict[str, Any], model: Model | None = None) -> Run:
-    """Recompute a trace's run from its initial positions and activation sets (under ``model``, by
-    default the trace's own). Every recorded round is replayed, also past a goal state (the robots
-    do not know they form a line, so the checker's witnesses may go on); the outcome is judged at the
-    end, and for a lasso (``loop_start``) the loop is checked to close, fairly."""
+    """Recompute a trace's run from its initial positions and actions (under ``model``, by default the
+    trace's own), with the model's transition system. Every recorded step is replayed, also past a goal
+    state (the robots do not know they form a line, so the checker's witnesses may go on); the outcome
+    is judged at the end, and for a lasso (``loop_start``) the loop is checked to close, fairly."""
     model = model or trace_model(doc)
+    system = system_for(model)
     initial = _positions(doc["initial"], model, "initial")
     loop_start = doc.get("loop_start")
     n = len(initial)
-    state = initial
-    rounds: list[RoundResult] = []
-    last: RoundResult | None = None
+    state = system.start(initial)
+    steps: list[Step] = []
+    last: Step | None = None
     for k, record in enumerate(doc["rounds"], start=1):
-        bad = [i for i in record["active"] if i >= n]
-        if bad:
-            raise InvalidTrace(f"rounds/{k - 1}/active: robot {bad[0]} does not exist; expected 0..{n - 1}")
-        last = play_round(state, record["active"], model)
-        rounds.append(last)
-        state = last.after
+        where = f"rounds/{k - 1}"
+        action = system.action_from_json(record, n, where)
+        try:
+            system.check_action(state, action, k)
+        except InvalidInput as exc:
+            raise InvalidTrace(f"{where}: {exc}") from None
+        last = system.play(state, action)
+        steps.append(last)
+        state = last.target
     if loop_start is not None:
-        if loop_start >= len(rounds):
-            raise InvalidTrace(f"loop_start={loop_start}: expected fewer than the {len(rounds)} rounds")
-        run = Run(model, initial, tuple(rounds), Outcome.CYCLE, loop_start)
-        closes = _translated(run.state_at(loop_start), state) and loop_is_fair(run)
-        clean = not any(r.violations for r in rounds)
-        return Run(
-            model, initial, tuple(rounds), Outcome.CYCLE if closes and clean else Outcome.ROUND_LIMIT, loop_start
-        )
-    outcome = outcome_after(state, last, model) or Outcome.ROUND_LIMIT
-    return Run(model, initial, tuple(rounds), outcome)
-
-
-def _translated(a: State, b: State) -> bool:
-    """Whether ``b`` is ``a`` moved by one common vector, robot by robot."""
-    dx, dy = b[0][0] - a[0][0], b[0][1] - a[0][1]
-    return all(q[0] - p[0] == dx and q[1] - p[1] == dy for p, q in zip(a, b, strict=True))
+        if loop_start >= len(steps):
+            raise InvalidTrace(f"loop_start={loop_start}: expected fewer than the {len(steps)} rounds")
+        run = Run(model, initial, tuple(steps), Outcome.CYCLE, loop_start)
+        closes = system.translated(_state_at(run, system, loop_start), state) and loop_is_fair(run)
+        clean = not any(r.violations for r in steps)
+        return Run(model, initial, tuple(steps), Outcome.CYCLE if closes and clean else Outcome.ROUND_LIMIT, loop_start)
+    outcome = outcome_after(state, last, model, system) or Outcome.ROUND_LIMIT
+    return Run(model, initial, tuple(steps), outcome)
 
 
 def loop_is_fair(run: Run) -> bool:
-    """No robot is enabled in every state of the loop without being activated in one of its rounds."""
+    """No robot is enabled in every state of the loop without acting in one of its steps."""
     assert run.loop_start is not None
+    system = system_for(run.model)
     loop = run.rounds[run.loop_start :]
     for i in range(len(run.initial)):
         idle = not any(i in r.active for r in loop)
-        if idle and all(decide_all(r.before, run.model, [i])[i].moves for r in loop):
+        if idle and all(i in system.enabled(r.source) for r in loop):
             return False
     return True
 

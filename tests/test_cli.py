@@ -171,9 +171,10 @@ def test_bad_traces_exit_2(capsys, tmp_path):
     assert_one_line_error(code, err, "no such file")
 
 
-def test_async_scheduler_is_a_clear_error(capsys):
-    code, _, err = run_cli(capsys, "simulate", "--init", "0,0 2,3", "--scheduler", "async")
-    assert_one_line_error(code, err, "scheduler='async': not implemented yet")
+def test_async_simulate_runs_events(capsys):
+    code, out, err = run_cli(capsys, "simulate", "--init", "0,0 2,3", "--scheduler", "async", "--seed", "4")
+    assert code in (0, 1) and err == ""
+    assert "scheduler async, seed 4, at most 100 events" in out
 
 
 def test_console_script_runs(tmp_path):

@@ -9,13 +9,10 @@ import pytest
 
 from fatline_verify.checker import check
 from fatline_verify.config import load_model
-from fatline_verify.explore.expand import activation_masks
-from fatline_verify.explore.fast import FastEngine
 from fatline_verify.explore.initial import count_by_brute_force, initial_array, initial_configurations
 from fatline_verify.explore.lattice import KeyCodec, canonical
-from fatline_verify.explore.scalar import ScalarEngine
 from fatline_verify.explore.search import explore
-from fatline_verify.options import Scheduler
+from fatline_verify.systems import system_for
 from fatline_verify.trace import check_replay
 from tests.conftest import make_model
 
@@ -52,25 +49,19 @@ def test_key_codec_round_trip_and_canonical_form():
     assert np.array_equal(codec.decode(codec.encode(canon)), canon)
 
 
-def test_activation_masks():
-    assert activation_masks(0b101, 3, Scheduler.SSYNC) == [0b001, 0b100, 0b101]
-    assert activation_masks(0b101, 3, Scheduler.FSYNC) == [0b101]
-    assert activation_masks(0b101, 3, Scheduler.CENTRALIZED) == [0b001, 0b100]
-    assert activation_masks(0, 3, Scheduler.SSYNC) == []
-
-
 FIELDS = [
     "keys",
     "parent",
-    "parent_mask",
+    "parent_action",
     "depth",
     "enabled",
     "goal",
     "edge_src",
     "edge_dst",
-    "edge_mask",
+    "edge_action",
     "edge_flags",
     "edge_fits",
+    "edge_exact",
 ]
 
 READINGS = [
@@ -97,9 +88,10 @@ READINGS = [
 def test_fast_engine_equals_scalar_engine(readings):
     model = make_model(**readings)
     for n, w in [(2, 6), (3, 6)]:
-        init = initial_array(n, (w, w), model)
-        a = explore(model, init, (w, w), ScalarEngine(model))
-        b = explore(model, init, (w, w), FastEngine(model))
+        system = system_for(model)
+        init = system.initial(initial_array(n, (w, w), model))
+        a = explore(system, init, (w, w), system.engine("scalar"))
+        b = explore(system, init, (w, w), system.engine("fast"))
         for f in FIELDS:
             assert np.array_equal(getattr(a, f), getattr(b, f)), f
 
@@ -146,7 +138,7 @@ def test_max_states_makes_liveness_inconclusive():
 def test_collision_words_equal_the_general_table(readings):
     """The 64-bit collision words (n <= 6) and the general (m, 2^n) table used beyond agree."""
     model = make_model(**readings)
-    engine = FastEngine(model)
+    engine = system_for(model).engine("fast")
     states = initial_array(4, (6, 6), model)
     dest, corner = engine._destinations(states)
     words = engine._collision_words(states, dest, corner)

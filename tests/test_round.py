@@ -3,6 +3,8 @@ scheduler. Ties (distance exactly 2, exactly rad_v) are pinned."""
 
 from __future__ import annotations
 
+import json
+import random
 from fractions import Fraction as Fr
 
 import pytest
@@ -10,7 +12,8 @@ import pytest
 from fatline_verify.algorithm import Rule
 from fatline_verify.options import Scheduler
 from fatline_verify.schedule import Collision, Disconnection, RmaMoved, collisions, decide_all, play_round, snapshot
-from fatline_verify.simulate import FairRandomScheduler, Outcome, simulate
+from fatline_verify.schedulers import round_scheduler
+from fatline_verify.simulate import Outcome, simulate
 from fatline_verify.swarm import initial_problems, is_connected, is_goal
 from tests.conftest import make_model
 
@@ -139,10 +142,13 @@ def test_initial_condition():
 
 @pytest.mark.parametrize("kind", [Scheduler.SSYNC, Scheduler.FSYNC, Scheduler.CENTRALIZED])
 def test_scheduler_kinds_and_fairness(kind):
-    chooser = FairRandomScheduler(kind, seed=3, n=4)
+    rounds, rng, waiting = round_scheduler(kind), random.Random(3), [0] * 4
     last_active = {i: 0 for i in range(4)}
     for rnd in range(1, 200):
-        active = chooser.choose((0, 1, 2, 3))
+        chosen = rounds.choose(rng, (0, 1, 2, 3), waiting, 4)
+        for i in range(4):
+            waiting[i] = 0 if i in chosen else waiting[i] + 1
+        active = tuple(sorted(chosen))
         assert active
         if kind is Scheduler.FSYNC:
             assert active == (0, 1, 2, 3)
@@ -153,11 +159,15 @@ def test_scheduler_kinds_and_fairness(kind):
         assert all(rnd - t <= 5 for t in last_active.values())  # nobody waits more than n + 1 rounds
 
 
-def test_async_is_selectable_but_not_run():
-    from fatline_verify.errors import Unsupported
+def test_async_simulation_is_seeded_and_replays():
+    from fatline_verify.trace import check_replay, run_to_json
 
-    with pytest.raises(Unsupported, match="scheduler='async'"):
-        simulate(((0, 0), (2, 3)), make_model(scheduler="async"))
+    model = make_model(scheduler="async")
+    runs = [simulate(((0, 0), (2, 3), (3, 0)), model, seed=s, max_rounds=60) for s in (1, 1, 2)]
+    assert [str(r.event) for r in runs[0].rounds] == [str(r.event) for r in runs[1].rounds]
+    for run in runs:
+        assert all(len(r.active) == 1 for r in run.rounds)  # one robot per event
+        check_replay(json.loads(json.dumps(run_to_json(run))), model)
 
 
 def test_simulation_reaches_goal_from_a_diagonal_pair():

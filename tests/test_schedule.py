@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from fatline_verify.config import load_model
-from fatline_verify.errors import InvalidInput, Unsupported
+from fatline_verify.errors import InvalidInput
 from fatline_verify.options import Scheduler
 from fatline_verify.simulate import Outcome, parse_schedule, play_schedule
 from fatline_verify.trace import load_trace, replay
@@ -51,9 +51,25 @@ def test_parse_schedule_rejects(text, scheduler, fragment):
     assert fragment in str(exc.value)
 
 
-def test_parse_schedule_async_is_not_implemented():
-    with pytest.raises(Unsupported, match="scheduler='async': not implemented yet"):
-        parse_schedule("0", 2, Scheduler.ASYNC)
+def test_parse_schedule_reads_async_events():
+    events = parse_schedule(" L0 ; M0;l1;m1 ", 2, Scheduler.ASYNC)
+    assert [str(e) for e in events] == ["L0", "M0", "L1", "M1"]
+
+
+@pytest.mark.parametrize(
+    ("text", "fragment"),
+    [
+        ("0", "event 1 '0' is not an event; expected events separated by ';'"),
+        ("L0;;M0", "event 2 '' is not an event"),
+        ("L2", "event 1: robot 2 does not exist (there are 2 robots)"),
+        ("L0;S0", "event 2 'S0': S<i> needs motion=non-rigid"),
+        ("X0", "event 1 'X0' is not an event"),
+    ],
+)
+def test_parse_schedule_rejects_bad_events(text, fragment):
+    with pytest.raises(InvalidInput) as exc:
+        parse_schedule(text, 2, Scheduler.ASYNC)
+    assert fragment in str(exc.value)
 
 
 # --- round trip through replay -----------------------------------------------------------------------------
@@ -172,7 +188,9 @@ def test_schedule_is_checked_against_the_models_scheduler(capsys, tmp_path):
         (["--schedule", "0;1,2", "--scheduler", "centralized"], "round 2 activates 2 robots (1,2)"),
         (["--schedule", "all", "--scheduler", "centralized"], "round 1 activates 3 robots (0,1,2)"),
         (["--schedule", "all;0,1", "--scheduler", "fsync"], "round 2 activates robots 0,1 of 3; expected every"),
-        (["--schedule", "0", "--scheduler", "async"], "scheduler='async': not implemented yet"),
+        (["--schedule", "0", "--scheduler", "async"], "event 1 '0' is not an event"),
+        (["--schedule", "M0", "--scheduler", "async"], "event 1 M0: robot 0 is idle; expected L0 first"),
+        (["--schedule", "L0;L0", "--scheduler", "async"], "event 2 L0: robot 0 is moving (0 of 2 steps done)"),
         (["--schedule", "0", "--seed", "7"], "seed='7': has no effect with --schedule"),
         (["--schedule", "0", "--rounds", "5"], "rounds='5': has no effect with --schedule"),
     ],

@@ -79,7 +79,7 @@ def test_replay_under_another_model_shows_the_difference(doc):
     ("mutate", "message"),
     [
         (lambda d: d.pop("rounds"), "'rounds' is a required property"),
-        (lambda d: d.__setitem__("version", 2), "at version"),
+        (lambda d: d.__setitem__("version", 3), "at version"),
         (lambda d: d["initial"].__setitem__(0, ["1.5", 0]), "at initial/0/0"),
         (lambda d: d["model"]["options"].__setitem__("vacant", "maybe"), "option vacant='maybe': unknown reading"),
         (lambda d: d["model"]["options"].__setitem__("colour", "red"), "option colour='red': unknown option"),

@@ -8,6 +8,7 @@ from typing import Any
 
 from ..outputs import Kind, child, claim_dir, claim_file, claim_files, write_json
 from ..progress import Progress
+from ..properties import Lemma
 from ..text import prove_lines
 from .common import (
     EXIT_FOUND,
@@ -26,6 +27,11 @@ from .common import (
 
 MAX_SLOTS = 8
 MAX_JOBS = 256
+LEMMA_CHOICES = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)
+"""The lemmas ``--lemma`` offers: :data:`fatline_verify.smt.obligations.LEMMAS`, named here without
+importing z3 when the parser is built (a test keeps the two equal)."""
+ALL = "all"
+"""``--lemma all``: every lemma the prover decides."""
 
 
 def cmd_prove(args: argparse.Namespace) -> int:
@@ -34,7 +40,7 @@ def cmd_prove(args: argparse.Namespace) -> int:
     from ..smt.obligations import LEMMAS
 
     model = model_arg(args.model)
-    lemmas = LEMMAS if args.lemma == "all" else (args.lemma,)
+    lemmas = LEMMAS if args.lemma == ALL else (Lemma(args.lemma),)
     root = claim_dir(args.out, name="out")
     out = claim_dir(child(root, model.name), name="out")
     traces_dir = claim_dir(args.traces, name="traces") if args.traces is not None else out / "traces"
@@ -80,7 +86,7 @@ def register(sub: Any) -> None:
         sub, "prove", "prove or refute the collision and connectivity lemmas per rule with z3, for any swarm size"
     )
     add_model_argument(p)
-    p.add_argument("--lemma", choices=["no-collision", "connectivity", "all"], default="all")
+    p.add_argument("--lemma", choices=[*(lemma.value for lemma in LEMMA_CHOICES), ALL], default=ALL)
     p.add_argument(
         "--timeout", type=seconds("timeout"), default=10.0, help="solver seconds per obligation (default 10)"
     )

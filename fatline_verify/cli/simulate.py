@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import argparse
+from dataclasses import replace
 from typing import Any
 
 from ..errors import InvalidInput
 from ..options import Scheduler
 from ..outputs import Kind, claim_file
 from ..simulate import Outcome, parse_schedule, play_schedule, simulate
+from ..systems import system_for
 from ..text import trace_lines
 from ..trace import run_to_json, write_trace
 from .common import (
@@ -45,26 +47,29 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     trace = claim_file(args.trace, name="trace", kind=Kind.TRACE, force=args.force) if args.trace is not None else None
     model = model_arg(args.model)
     initial = parse_init(args.init, model)
-    scheduler = Scheduler(args.scheduler) if args.scheduler else model.options.scheduler
+    if args.scheduler:  # the trace records the scheduler it ran under, so replay runs it again
+        model = replace(model, options=model.options.with_(scheduler=args.scheduler))
+    scheduler = model.options.scheduler
+    word = system_for(model).step_word
     lines = [f"model {model.describe()}"]
     if args.schedule is not None:
-        rounds = parse_schedule(args.schedule, len(initial), scheduler)
+        rounds = parse_schedule(args.schedule, len(initial), scheduler, model)
         run = play_schedule(initial, model, rounds)
         origin = {"tool": "fatline simulate", "scheduler": str(scheduler), "schedule": args.schedule}
         lines.append(
-            f"scheduler {scheduler}, schedule {args.schedule!r}: {len(rounds)} round{'s' if len(rounds) != 1 else ''}"
+            f"scheduler {scheduler}, schedule {args.schedule!r}: {len(rounds)} {word}{'s' if len(rounds) != 1 else ''}"
         )
     else:
         seed = DEFAULT_SEED if args.seed is None else args.seed
         max_rounds = DEFAULT_ROUNDS if args.rounds is None else args.rounds
-        run = simulate(initial, model, scheduler=scheduler, seed=seed, max_rounds=max_rounds)
+        run = simulate(initial, model, seed=seed, max_rounds=max_rounds)
         origin = {"tool": "fatline simulate", "scheduler": str(scheduler), "seed": seed}
-        lines.append(f"scheduler {scheduler}, seed {seed}, at most {max_rounds} rounds")
+        lines.append(f"scheduler {scheduler}, seed {seed}, at most {max_rounds} {word}s")
     doc = run_to_json(run, origin)
     lines += trace_lines(doc)
     if args.schedule is not None and len(run.rounds) < len(rounds):
         rest = len(rounds) - len(run.rounds)
-        lines.append(f"the remaining {rest} scheduled round{'s' if rest != 1 else ''} were not played")
+        lines.append(f"the remaining {rest} scheduled {word}{'s' if rest != 1 else ''} were not played")
     if trace is not None:
         write_trace(doc, trace)
         lines.append(f"trace written to {trace}")
@@ -87,12 +92,14 @@ def register(sub: Any) -> None:
     )
     p.add_argument(
         "--schedule",
-        metavar="ROUNDS",
-        help="play exactly these activation sets, one per round, instead of the random scheduler: rounds "
-        "separated by ';', robots (indices in --init order, from 0) by ',', 'all' for every robot, e.g. "
-        '"0;1,2;all". An activated robot that would not move stays. Checked against the scheduler before '
-        "anything runs: centralized one robot a round, fsync every robot, ssync any non-empty set. The run "
-        "stops early only at a violation; past the goal or a deadlock the remaining rounds are still "
+        metavar="STEPS",
+        help="play exactly these steps instead of the random scheduler, separated by ';'. Round schedulers: "
+        "activation sets, robots (indices in --init order, from 0) separated by ',', 'all' for every robot, "
+        'e.g. "0;1,2;all"; an activated robot that would not move stays; checked against the scheduler '
+        "before anything runs: centralized one robot a round, fsync every robot, ssync any non-empty set. "
+        'async: events, e.g. "L0;M0;L1;M0;M1": L<i> robot i looks and computes on the current positions, '
+        "M<i> it takes one of async_steps move steps, S<i> it ends its move early (motion=non-rigid). The "
+        "run stops early only at a violation; past the goal or a deadlock the remaining steps are still "
         "played. Not combinable with --seed or --rounds",
     )
     p.add_argument(
@@ -105,7 +112,7 @@ def register(sub: Any) -> None:
         "--rounds",
         type=integer("rounds", 0, MAX_ROUNDS),
         default=None,
-        help=f"stop after this many rounds (default {DEFAULT_ROUNDS}; not with --schedule)",
+        help=f"stop after this many rounds, or events under async (default {DEFAULT_ROUNDS}; not with --schedule)",
     )
     p.add_argument("--trace", help="write the run as a trace JSON file")
     add_force(p)

@@ -15,18 +15,17 @@ Subset enumeration, positions after, connectivity, the RMA and the goal are plai
 from __future__ import annotations
 
 from math import isqrt
+from typing import Any
 
 import numpy as np
 
 from ..algorithm import decide
 from ..config import Model
 from ..options import Goal
-from ..properties import FLAG, Lemma
+from ..properties import Lemma
 from ..schedule import closest_dist2, collides
-from ..schedulers import round_scheduler
-from .expand import Expansion
+from ..systems.base import Expansion
 from .lattice import connected
-from .scalar import require_runnable
 
 _CORNER_NONE, _CORNER_H, _CORNER_V = 0, 1, 2
 
@@ -56,13 +55,15 @@ class _Table:
 
 
 class FastEngine:
-    """Vectorised engine; produces exactly the scalar engine's expansion."""
+    """Vectorised engine of the round systems; produces exactly the scalar engine's expansion."""
 
     name = "fast"
 
-    def __init__(self, model: Model) -> None:
-        self.model = model
-        self.scheduler = require_runnable(model)
+    def __init__(self, system: Any) -> None:
+        self.system = system
+        self.model: Model = system.model
+        model = self.model
+        self.rounds = system.rounds
         self.rule = model.algorithm or decide
         self.reach = isqrt(model.view2)
         self.side = 2 * self.reach + 1
@@ -233,7 +234,7 @@ class FastEngine:
         goal = self._goal(states)
 
         all_masks = np.arange(1, 1 << n, dtype=np.int64)
-        valid = round_scheduler(self.scheduler).valid(all_masks, enabled)
+        valid = self.rounds.valid(all_masks, enabled)
         src, col = np.nonzero(valid)
         mask = all_masks[col]
         active = (mask[:, None] & bits[None, :]) != 0  # (t, n)
@@ -245,14 +246,14 @@ class FastEngine:
             hit = (table[src] >> mask.astype(np.uint64)) & np.uint64(1) == 1
         else:
             hit = self._collisions_by_mask(states, dest, corner)[src, mask]
-        flags |= np.where(hit, FLAG[Lemma.NO_COLLISION], 0)
+        flags |= np.where(hit, Lemma.NO_COLLISION.flag, 0)
 
         before_ok = connected(states, self.model)
         lost = before_ok[src] & ~connected(after, self.model)
-        flags |= np.where(lost, FLAG[Lemma.CONNECTIVITY], 0)
+        flags |= np.where(lost, Lemma.CONNECTIVITY.flag, 0)
 
         rma = states[..., 0].max(axis=1)[src]
         xb, xa = states[src][..., 0], after[..., 0]
         crossed = (xa > rma[:, None]) | ((xb == rma[:, None]) & (xa != rma[:, None]))
-        flags |= np.where(crossed.any(axis=1), FLAG[Lemma.RMA_FIXED], 0)
-        return Expansion(enabled, goal, src.astype(np.int64), mask, after, flags)
+        flags |= np.where(crossed.any(axis=1), Lemma.RMA_FIXED.flag, 0)
+        return Expansion(enabled, goal, src.astype(np.int64), mask, after, flags, np.ones(len(src), dtype=bool))

@@ -32,6 +32,8 @@ def extent(canon: np.ndarray) -> np.ndarray:
 class KeyCodec:
     """Packs canonical states of ``n`` robots inside a ``w x h`` window into int64 keys and back."""
 
+    dtype = np.dtype(np.int64)
+
     def __init__(self, n: int, window: tuple[int, int]) -> None:
         self.n, (self.w, self.h) = n, window
         self.bits = max(1, int(self.w * self.h - 1).bit_length())

@@ -20,8 +20,6 @@ from itertools import pairwise
 import networkx as nx
 import numpy as np
 
-from ..schedule import play_round
-from .lattice import canonical
 from .search import Exploration
 
 Labels = tuple[int, ...]
@@ -48,12 +46,12 @@ def _trim(src: np.ndarray, dst: np.ndarray, n_nodes: int) -> np.ndarray:
         keep = ok
 
 
-def _permutation(ex: Exploration, state_id: int, mask: int) -> tuple[int, ...]:
-    """For the round ``mask`` from ``state_id``: ``perm[k]`` = the source index now at canonical index k."""
-    state = tuple((int(x), int(y)) for x, y in ex.states[state_id])
-    active = [i for i in range(ex.n) if mask >> i & 1]
-    after = play_round(state, active, ex.model).after
-    _, order = canonical(np.array([after], dtype=np.int64))
+def _permutation(ex: Exploration, state_id: int, code: int) -> tuple[int, ...]:
+    """For the step ``code`` from ``state_id``: ``perm[k]`` = the source index now at canonical index k."""
+    system = ex.system
+    state = system.from_array(ex.states[state_id])
+    target = system.play(state, system.action(code, range(ex.n), state)).target
+    _, order = system.canonical(system.to_array(target)[None])
     return tuple(int(i) for i in order[0])
 
 
@@ -64,7 +62,7 @@ def fair_cycles(ex: Exploration, nodes: np.ndarray) -> list[Lasso]:
     ``after_violation == "continue"``).
     """
     ok = (ex.edge_dst >= 0) & nodes[ex.edge_src] & nodes[np.maximum(ex.edge_dst, 0)]
-    src, dst, mask = ex.edge_src[ok], ex.edge_dst[ok], ex.edge_mask[ok]
+    src, dst, mask = ex.edge_src[ok], ex.edge_dst[ok], ex.edge_action[ok]
     keep = _trim(src, dst, ex.n_states)
     src, dst, mask = src[keep], dst[keep], mask[keep]
     if not len(src):

@@ -3,9 +3,11 @@
 From all initial configurations at once, level by level. Within a level the new states are
 numbered in key order and each one's parent is its least ``(source id, mask)`` transition, so state
 ids, parent pointers and hence witnesses are the same whatever the engine, and every witness is a
-shortest one. A state reached only through a violating round is not explored further (the
+shortest one. A state reached only through a violating step is not explored further (the
 ``after_violation="stop"`` semantics, counted in ``violating_only``); states that outgrow the window
-are counted (``escaped``) and make liveness verdicts INCONCLUSIVE.
+or leave the system's lattice are counted (``escaped``, ``off_lattice``) and make liveness verdicts
+INCONCLUSIVE. States, keys and actions are the transition system's
+(:class:`~fatline_verify.systems.base.TransitionSystem`); the search knows nothing of schedulers.
 """
 
 from __future__ import annotations
@@ -16,8 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..config import Model
-from .expand import Engine
-from .lattice import KeyCodec, canonical
+from ..systems.base import Engine, TransitionSystem
 
 
 @dataclass(slots=True)
@@ -25,6 +26,7 @@ class Exploration:
     """The explored transition system (arrays indexed by state id / transition number)."""
 
     model: Model = field(repr=False)
+    system: TransitionSystem = field(repr=False)
     n: int
     window: tuple[int, int]
     engine: str
@@ -32,18 +34,22 @@ class Exploration:
     states: np.ndarray = field(repr=False)
     keys: np.ndarray = field(repr=False)
     parent: np.ndarray = field(repr=False)
-    parent_mask: np.ndarray = field(repr=False)
+    parent_action: np.ndarray = field(repr=False)
     depth: np.ndarray = field(repr=False)
     expanded: np.ndarray = field(repr=False)
     enabled: np.ndarray = field(repr=False)
     goal: np.ndarray = field(repr=False)
     edge_src: np.ndarray = field(repr=False)
     edge_dst: np.ndarray = field(repr=False)
-    """Destination id, or -1 when the destination was not explored (outside the window, reached only
-    through a violating round, or beyond the state bound)."""
-    edge_mask: np.ndarray = field(repr=False)
+    """Destination id, or -1 when the destination was not explored (outside the window, off the
+    lattice, reached only through a violating step, or beyond the state bound)."""
+    edge_action: np.ndarray = field(repr=False)
+    """The step's action code, in the source state's canonical robot order."""
     edge_flags: np.ndarray = field(repr=False)
     edge_fits: np.ndarray = field(repr=False)
+    """The destination is on the lattice and inside the window."""
+    edge_exact: np.ndarray = field(repr=False)
+    """The destination is on the system's lattice (``False``: counted in :attr:`off_lattice`)."""
     truncated: bool = False
     after_violation: str = "stop"
 
@@ -57,8 +63,18 @@ class Exploration:
 
     @property
     def escaped(self) -> int:
-        """Transitions from explored states to states outside the window."""
+        """Transitions from explored states to states outside the window or off the lattice."""
         return int((~self.edge_fits).sum())
+
+    @property
+    def off_lattice(self) -> int:
+        """Transitions to states whose positions leave the system's lattice (ASYNC: a K-fine step)."""
+        return int((~self.edge_exact).sum())
+
+    @property
+    def acting(self) -> np.ndarray:
+        """Per transition, the robots that act in it (bitmask, canonical order of the source)."""
+        return self.edge_action & ((1 << self.n) - 1)  # type: ignore[no-any-return]
 
     @property
     def violating_only(self) -> int:
@@ -66,10 +82,10 @@ class Exploration:
         return int(((self.edge_dst < 0) & self.edge_fits & (self.edge_flags != 0)).sum())
 
     def path(self, state_id: int) -> list[tuple[int, int]]:
-        """``[(source id, mask), ...]`` from an initial state to ``state_id``."""
+        """``[(source id, action), ...]`` from an initial state to ``state_id``."""
         steps = []
         while self.parent[state_id] >= 0:
-            steps.append((int(self.parent[state_id]), int(self.parent_mask[state_id])))
+            steps.append((int(self.parent[state_id]), int(self.parent_action[state_id])))
             state_id = int(self.parent[state_id])
         return steps[::-1]
 
@@ -81,7 +97,7 @@ class Exploration:
 
 
 def explore(
-    model: Model,
+    system: TransitionSystem,
     initial: np.ndarray,
     window: tuple[int, int],
     engine: Engine,
@@ -91,17 +107,20 @@ def explore(
     batch: int = 50_000,
     progress: Callable[[int, int, int, int], None] | None = None,
 ) -> Exploration:
-    """Breadth-first search from every state of ``initial`` (canonical, sorted by key)."""
-    m0, n, _ = initial.shape
-    codec = KeyCodec(n, window)
-    keys = [codec.encode(initial)]
+    """Breadth-first search from every state of ``initial`` (canonical array states of ``system``)."""
+    m0, n, nf = initial.shape
+    codec = system.codec(n, window)
+    keys0 = codec.encode(initial)
+    first_order = np.argsort(keys0, kind="stable")
+    initial, keys0 = initial[first_order], keys0[first_order]
+    keys = [keys0]
     states = [initial]
     parent = [np.full(m0, -1, dtype=np.int64)]
-    pmask = [np.zeros(m0, dtype=np.int64)]
+    paction = [np.zeros(m0, dtype=np.int64)]
     depth = [np.zeros(m0, dtype=np.int64)]
     enabled_parts, goal_parts = [], []
-    e_src, e_key, e_mask, e_flags, e_fits = [], [], [], [], []
-    visited = np.sort(keys[0])
+    e_src, e_key, e_action, e_flags, e_fits, e_exact = [], [], [], [], [], []
+    visited = keys0.copy()
     frontier_ids = np.arange(m0, dtype=np.int64)
     frontier = initial
     total = m0
@@ -111,49 +130,51 @@ def explore(
         if total > max_states:
             truncated = True
             break
-        lvl_src, lvl_mask, lvl_key, lvl_flags, lvl_fits = [], [], [], [], []
+        lvl_src, lvl_action, lvl_key, lvl_flags, lvl_fits, lvl_exact = [], [], [], [], [], []
         for start in range(0, len(frontier), batch):
             chunk = frontier[start : start + batch]
             ex = engine.expand(chunk)
             enabled_parts.append(ex.enabled)
             goal_parts.append(ex.goal)
-            canon, _ = canonical(ex.after) if len(ex.after) else (ex.after, None)
-            fits = codec.fits(canon) if len(canon) else np.zeros(0, dtype=bool)
-            k = np.full(len(canon), -1, dtype=np.int64)
+            canon, _ = system.canonical(ex.after) if len(ex.after) else (ex.after, None)
+            fits = (codec.fits(canon) & ex.exact) if len(canon) else np.zeros(0, dtype=bool)
+            k = np.zeros(len(canon), dtype=codec.dtype)
             if fits.any():
                 k[fits] = codec.encode(canon[fits])
             lvl_src.append(frontier_ids[start : start + batch][ex.src])
-            lvl_mask.append(ex.mask)
+            lvl_action.append(ex.action)
             lvl_key.append(k)
             lvl_flags.append(ex.flags)
             lvl_fits.append(fits)
+            lvl_exact.append(ex.exact)
             if progress:
                 progress(level, start + len(chunk), len(frontier), total)
-        src, mask, key = np.concatenate(lvl_src), np.concatenate(lvl_mask), np.concatenate(lvl_key)
+        src, action, key = np.concatenate(lvl_src), np.concatenate(lvl_action), np.concatenate(lvl_key)
         flags, fits = np.concatenate(lvl_flags), np.concatenate(lvl_fits)
         e_src.append(src)
-        e_mask.append(mask)
+        e_action.append(action)
         e_key.append(key)
         e_flags.append(flags)
         e_fits.append(fits)
+        e_exact.append(np.concatenate(lvl_exact))
         usable = fits if after_violation == "continue" else fits & (flags == 0)
-        ck, cs, cm = key[usable], src[usable], mask[usable]
-        order = np.lexsort((cm, cs, ck))
-        ck, cs, cm = ck[order], cs[order], cm[order]
+        ck, cs, ca = key[usable], src[usable], action[usable]
+        order = np.lexsort((ca, cs, ck))
+        ck, cs, ca = ck[order], cs[order], ca[order]
         first = np.ones(len(ck), dtype=bool)
         first[1:] = ck[1:] != ck[:-1]
-        ck, cs, cm = ck[first], cs[first], cm[first]
+        ck, cs, ca = ck[first], cs[first], ca[first]
         pos = np.searchsorted(visited, ck)
         pos = np.minimum(pos, len(visited) - 1)
         new = visited[pos] != ck
-        ck, cs, cm = ck[new], cs[new], cm[new]
+        ck, cs, ca = ck[new], cs[new], ca[new]
         level += 1
         new_ids = np.arange(total, total + len(ck), dtype=np.int64)
-        frontier = codec.decode(ck)
+        frontier = codec.decode(ck) if len(ck) else np.zeros((0, n, nf), dtype=np.int64)
         keys.append(ck)
         states.append(frontier)
         parent.append(cs)
-        pmask.append(cm)
+        paction.append(ca)
         depth.append(np.full(len(ck), level, dtype=np.int64))
         visited = np.sort(np.concatenate([visited, ck]))
         frontier_ids = new_ids
@@ -168,17 +189,19 @@ def explore(
     if n_expanded:
         enabled[:n_expanded] = np.concatenate(enabled_parts)
         goal[:n_expanded] = np.concatenate(goal_parts)
-    edge_key = np.concatenate(e_key) if e_key else np.zeros(0, dtype=np.int64)
-    by_key = np.argsort(all_keys)
+    edge_key = np.concatenate(e_key) if e_key else np.zeros(0, dtype=codec.dtype)
+    edge_fits = np.concatenate(e_fits) if e_fits else np.zeros(0, dtype=bool)
+    by_key = np.argsort(all_keys, kind="stable")
     sorted_keys = all_keys[by_key]
     pos = np.minimum(np.searchsorted(sorted_keys, edge_key), len(sorted_keys) - 1)
-    hit = (sorted_keys[pos] == edge_key) & (edge_key >= 0)
+    hit = (sorted_keys[pos] == edge_key) & edge_fits
     edge_flags = np.concatenate(e_flags) if e_flags else np.zeros(0, dtype=np.int64)
     dst = np.where(hit, by_key[pos], -1)
-    if after_violation == "stop":  # a destination reached through a violating round is not an edge of the search
+    if after_violation == "stop":  # a destination reached through a violating step is not an edge of the search
         dst = np.where(edge_flags == 0, dst, -1)
     return Exploration(
-        model=model,
+        model=system.model,
+        system=system,
         n=n,
         window=window,
         engine=engine.name,
@@ -186,16 +209,17 @@ def explore(
         states=np.concatenate(states),
         keys=all_keys,
         parent=np.concatenate(parent),
-        parent_mask=np.concatenate(pmask),
+        parent_action=np.concatenate(paction),
         depth=np.concatenate(depth),
         expanded=expanded,
         enabled=enabled,
         goal=goal,
         edge_src=np.concatenate(e_src) if e_src else np.zeros(0, dtype=np.int64),
         edge_dst=dst.astype(np.int64),
-        edge_mask=np.concatenate(e_mask) if e_mask else np.zeros(0, dtype=np.int64),
+        edge_action=np.concatenate(e_action) if e_action else np.zeros(0, dtype=np.int64),
         edge_flags=edge_flags,
-        edge_fits=np.concatenate(e_fits) if e_fits else np.zeros(0, dtype=bool),
+        edge_fits=edge_fits,
+        edge_exact=np.concatenate(e_exact) if e_exact else np.zeros(0, dtype=bool),
         truncated=truncated,
         after_violation=after_violation,
     )

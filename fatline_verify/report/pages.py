@@ -15,12 +15,13 @@ from collections.abc import Callable
 from typing import Any
 
 from ..options import CATALOGUE
-from ..properties import Lemma
+from ..properties import CHECKED, Lemma
 from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, prove_row, violation_line
 from .data import ModelReport
 
 RANK = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
-PROVER_LEMMAS = ("no-collision", "connectivity")
+PROVER_LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)
+"""The prover's lemmas, in its results order (:data:`fatline_verify.smt.obligations.LEMMAS`, without z3)."""
 
 VIEWER_JS = """
 document.querySelectorAll('.viewer').forEach(function (v) {
@@ -300,14 +301,14 @@ def model_html(report: ModelReport) -> str:
 def _matrix(reports: list[ModelReport]) -> tuple[list[str], list[list[str]]]:
     headers = (
         ["model", "readings"]
-        + [f"{lemma.value} (check)" for lemma in Lemma]
-        + [f"{lemma} (prove)" for lemma in PROVER_LEMMAS]
+        + [f"{lemma.value} (check)" for lemma in CHECKED]
+        + [f"{lemma.value} (prove)" for lemma in PROVER_LEMMAS]
     )
     rows = []
     for r in reports:
         row = [r.model.name, _readings(r)]
-        row += [_worst(r.check["lemmas"], lemma.value) for lemma in Lemma]
-        row += [_prover_summary(r.prove["obligations"], lemma) for lemma in PROVER_LEMMAS]
+        row += [_worst(r.check["lemmas"], lemma.value) for lemma in CHECKED]
+        row += [_prover_summary(r.prove["obligations"], lemma.value) for lemma in PROVER_LEMMAS]
         rows.append(row)
     return headers, rows
 
@@ -357,13 +358,13 @@ def _prove_cell(rows: list[dict[str, Any]], lemma: str) -> str:
 
 def _matrix_html(reports: list[ModelReport]) -> str:
     """The readings x lemmas matrix: grouped headers, a compact readings column, verdicts that wrap."""
-    check, prove = len(Lemma), len(PROVER_LEMMAS)
+    check, prove = len(CHECKED), len(PROVER_LEMMAS)
     head = (
         '<tr><th rowspan="2">model</th><th rowspan="2">readings</th>'
         f'<th class="group" colspan="{check}" title="{html.escape(CHECK_TITLE)}">check (bounded model checker)</th>'
         f'<th class="group" colspan="{prove}" title="{html.escape(PROVE_TITLE)}">prove (z3, per rule)</th></tr><tr>'
-        + "".join(f'<th title="{html.escape(CHECK_TITLE)}">{html.escape(lemma.value)}</th>' for lemma in Lemma)
-        + "".join(f'<th title="{html.escape(PROVE_TITLE)}">{html.escape(lemma)}</th>' for lemma in PROVER_LEMMAS)
+        + "".join(f'<th title="{html.escape(CHECK_TITLE)}">{html.escape(lemma.value)}</th>' for lemma in CHECKED)
+        + "".join(f'<th title="{html.escape(PROVE_TITLE)}">{html.escape(lemma.value)}</th>' for lemma in PROVER_LEMMAS)
         + "</tr>"
     )
     body = []
@@ -371,13 +372,13 @@ def _matrix_html(reports: list[ModelReport]) -> str:
         name = html.escape(r.model.name)
         cells = [f'<td class="model"><a href="{name}/index.html">{name}</a></td>']
         cells.append(f'<td class="readings">{_readings_html(r, "", sep="<br>")}</td>')
-        cells += [_check_cell(r.check["lemmas"], lemma.value) for lemma in Lemma]
-        cells += [_prove_cell(r.prove["obligations"], lemma) for lemma in PROVER_LEMMAS]
+        cells += [_check_cell(r.check["lemmas"], lemma.value) for lemma in CHECKED]
+        cells += [_prove_cell(r.prove["obligations"], lemma.value) for lemma in PROVER_LEMMAS]
         body.append("<tr>" + "".join(cells) + "</tr>")
     return f'<table class="matrix">{head}{"".join(body)}</table>'
 
 
-LEMMA_ORDER = {lemma.value: k for k, lemma in enumerate(Lemma)}
+LEMMA_ORDER = {lemma.value: k for k, lemma in enumerate(CHECKED)}
 
 
 def _smallest_first(t: dict[str, Any]) -> tuple[int, int, int, str]:

@@ -28,6 +28,8 @@ from ..config import Model
 from ..options import Bands, Quadrants, Visibility
 from ..schedule import Collision, Disconnection, RmaMoved
 from ..simulate import Run
+from ..systems import system_for
+from ..systems.base import Marks
 from ..text import SHORT, stay_lines, violation_line
 
 plt.rcParams["svg.hashsalt"] = "fatline-verify"
@@ -94,8 +96,8 @@ def frame_figure(run: Run, k: int, doc: dict[str, Any]) -> Any:
     state = rnd.before if rnd else (run.final if k > n_rounds else run.initial)
     pts = [_radii(model, p) for p in state]
     after = [_radii(model, p) for p in rnd.after] if rnd else pts
-    movers = [i for i in (rnd.active if rnd else ()) if rnd and rnd.decisions[i].moves]
-    acting = movers[0] if movers else (rnd.active[0] if rnd else 0)
+    marks = system_for(model).marks(rnd) if rnd else Marks(0)
+    acting = marks.acting
     reach = _reach(model)
 
     clip = Circle(pts[acting], reach, fill=False, ls="--", lw=1, color="#4e79a7")
@@ -112,14 +114,21 @@ def frame_figure(run: Run, k: int, doc: dict[str, Any]) -> Any:
         edge = BAD if i in bad else "black"
         ax.add_patch(Circle((x, y), 1.0, facecolor=face, edgecolor=edge, lw=2.2 if i in bad else 1.0, zorder=3))
         ax.text(x, y, f"r{i}", ha="center", va="center", zorder=4)
+    for p in marks.ghosts:  # what the acting robot decided on, where it is no longer
+        ax.add_patch(Circle(_radii(model, p), 1.0, facecolor=IDLE, edgecolor="#999999", alpha=0.35, ls="--", zorder=2))
+    for line in marks.remaining:  # moves under way: from where the robot is to its destination
+        path = [_radii(model, p) for p in line]
+        ax.plot([p[0] for p in path], [p[1] for p in path], ls="--", lw=1.2, color="#7f7f7f", zorder=4)
+        ax.add_patch(Circle(path[-1], 1.0, fill=False, ls=":", lw=1.0, edgecolor="#7f7f7f", zorder=2))
     if rnd:
-        for i in movers:
-            path = [_radii(model, (state[i][0] + px, state[i][1] + py)) for px, py in rnd.decisions[i].path]
+        for line in marks.arrows:
+            path = [_radii(model, p) for p in line]
             for a, b in itertools.pairwise(path):
                 ax.add_patch(
                     FancyArrowPatch(a, b, arrowstyle="-|>", mutation_scale=14, lw=1.6, color="#333333", zorder=5)
                 )
-            ax.add_patch(Circle(after[i], 1.0, fill=False, ls=":", lw=1.2, edgecolor="#333333", zorder=2))
+        for p in marks.targets:
+            ax.add_patch(Circle(_radii(model, p), 1.0, fill=False, ls=":", lw=1.2, edgecolor="#333333", zorder=2))
         for v in rnd.violations:
             if isinstance(v, Disconnection):
                 for ea, eb in v.lost_edges:
@@ -129,17 +138,19 @@ def frame_figure(run: Run, k: int, doc: dict[str, Any]) -> Any:
             if isinstance(v, RmaMoved):
                 rma = _f(Fraction(v.rma_x) / model.radius)
                 ax.axvline(rma, color=BAD, lw=1, ls="-.", zorder=1)
-    xs = [p[0] for p in pts + after] + [pts[acting][0] - reach, pts[acting][0] + reach]
-    ys = [p[1] for p in pts + after] + [pts[acting][1] - reach, pts[acting][1] + reach]
+    extra = [_radii(model, p) for line in (*marks.remaining, *marks.arrows) for p in line]
+    extra += [_radii(model, p) for p in (*marks.ghosts, *marks.targets)]
+    xs = [p[0] for p in pts + after + extra] + [pts[acting][0] - reach, pts[acting][0] + reach]
+    ys = [p[1] for p in pts + after + extra] + [pts[acting][1] - reach, pts[acting][1] + reach]
     ax.set_xlim(min(xs) - 1.5, max(xs) + 1.5)
     ax.set_ylim(min(ys) - 1.5, max(ys) + 1.5)
     ax.grid(True, lw=0.3, alpha=0.5)
-    ax.set_title(_title(run, doc, k), fontsize=9, loc="left")
+    ax.set_title(_title(run, doc, k, marks.note), fontsize=9, loc="left")
     return fig
 
 
-def _title(run: Run, doc: dict[str, Any], k: int) -> str:
-    """The caption of picture ``k``: the round's moves and violations, or how the trace ends."""
+def _title(run: Run, doc: dict[str, Any], k: int, note: str = "") -> str:
+    """The caption of picture ``k``: the step's moves and violations, or how the trace ends."""
     n_rounds = len(run.rounds)
     if 1 <= k <= n_rounds:
         rec = doc["rounds"][k - 1]
@@ -148,7 +159,8 @@ def _title(run: Run, doc: dict[str, Any], k: int) -> str:
             f"{SHORT.coordinate(d['destination'][1])})"
             for d in rec["decisions"]
         )
-        lines = [f"round {k} of {n_rounds}: {moves}"]
+        word = system_for(run.model).step_word
+        lines = [f"{word} {k} of {n_rounds}: " + "; ".join(x for x in (note, moves) if x)]
         lines += [violation_line(v, SHORT) for v in rec["violations"]]
         return "\n".join(_wrap(line) for line in lines)
     if k == 0:
@@ -157,7 +169,7 @@ def _title(run: Run, doc: dict[str, Any], k: int) -> str:
         "deadlock": "deadlock: nobody moves, no line",
         "cycle": "the loop repeats forever",
         "goal": "goal reached",
-        "violation": "after the violating round",
+        "violation": f"after the violating {system_for(run.model).step_word}",
         "round-limit": "end of trace",
     }
     v = doc.get("violation")

@@ -24,6 +24,7 @@ import z3
 from ..algorithm import Rule
 from ..config import Model
 from ..options import Contact, PathShape, Scheduler, Timing
+from ..properties import Lemma
 from .symbolic import MOVING, Slot, SymDecision, decide, make_slots, real, sq, view_reach, witness_bound
 
 FORMS = ("one-mover", "two-movers")
@@ -38,7 +39,8 @@ def forms_for(scheduler: Scheduler) -> tuple[str, ...]:
     return {Scheduler.SSYNC: FORMS, Scheduler.CENTRALIZED: ("one-mover",)}.get(scheduler, ())
 
 
-LEMMAS = ("no-collision", "connectivity")
+LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)
+"""The lemmas the prover decides, in results order."""
 
 
 class NotEncoded(Exception):
@@ -49,7 +51,7 @@ class NotEncoded(Exception):
 class Obligation:
     """One SMT obligation, ready to write and solve."""
 
-    lemma: str
+    lemma: Lemma
     form: str
     rule: Rule
     k: int
@@ -109,13 +111,16 @@ def _param(name: str) -> tuple[z3.ArithRef, list[z3.BoolRef]]:
     return t, [t >= 0, t <= 1]
 
 
-def argument(lemma: str, form: str, rule: Rule, k: int, bound: int, any_size: bool) -> str:
+def argument(lemma: Lemma, form: str, rule: Rule, k: int, bound: int, any_size: bool) -> str:
     """The comment that says what an ``unsat`` answer proves, and on what it rests."""
     what = {
-        ("no-collision", "one-mover"): "no robot o at rest comes within distance 2 of r's path",
-        ("no-collision", "two-movers"): "no robot s moving in the same round comes within distance 2 of r",
-        ("connectivity", "one-mover"): "every robot o at rest that r saw before the round is still visible after it",
-        ("connectivity", "two-movers"): "a robot s that moves in the same round stays visible to r",
+        (Lemma.NO_COLLISION, "one-mover"): "no robot o at rest comes within distance 2 of r's path",
+        (Lemma.NO_COLLISION, "two-movers"): "no robot s moving in the same round comes within distance 2 of r",
+        (
+            Lemma.CONNECTIVITY,
+            "one-mover",
+        ): "every robot o at rest that r saw before the round is still visible after it",
+        (Lemma.CONNECTIVITY, "two-movers"): "a robot s that moves in the same round stays visible to r",
     }[(lemma, form)]
     lines = [
         f"Obligation: {lemma}, {form}, r's rule {rule.value}.",
@@ -184,7 +189,7 @@ def build_global(model: Model, k: int, initial: bool = False) -> Obligation:
         asserts += initial_condition(model, slots)
     comment = "\n".join(
         [
-            f"Obligation: connectivity, global form, r and {k} slot robots (each may be absent).",
+            f"Obligation: {Lemma.CONNECTIVITY}, global form, r and {k} slot robots (each may be absent).",
             "Claim (Lemma 1): a connected configuration stays connected after one semi-synchronous round.",
             "Encoding: every present robot decides from its own view of the others (symbolic decide); a symbolic "
             "set of robots (a0, a1, ...) moves, as the scheduler allows (ssync: any set; centralized: exactly one; "
@@ -194,7 +199,7 @@ def build_global(model: Model, k: int, initial: bool = False) -> Obligation:
             "Assumptions: exact real arithmetic; robots are non-overlapping unit discs; one shared snapshot.",
         ]
     )
-    return Obligation("connectivity", "global", Rule.ALONE, k, False, comment, asserts, slots, actives)
+    return Obligation(Lemma.CONNECTIVITY, "global", Rule.ALONE, k, False, comment, asserts, slots, actives)
 
 
 def initial_condition(model: Model, slots: list[Slot]) -> list[z3.BoolRef]:
@@ -227,7 +232,7 @@ def initial_condition(model: Model, slots: list[Slot]) -> list[z3.BoolRef]:
     return out
 
 
-def build(model: Model, lemma: str, form: str, rule: Rule, k: int, initial: bool = False) -> Obligation:
+def build(model: Model, lemma: Lemma, form: str, rule: Rule, k: int, initial: bool = False) -> Obligation:
     """The obligation that ``rule`` breaks ``lemma`` in the given form, with ``k`` slot robots."""
     if lemma not in LEMMAS or form not in FORMS:
         raise ValueError(f"unknown obligation {lemma}/{form}")
@@ -246,7 +251,7 @@ def build(model: Model, lemma: str, form: str, rule: Rule, k: int, initial: bool
     asserts.append(o.present)
     reach2 = real(view_reach(model) ** 2)
     if form == "one-mover":
-        if lemma == "no-collision":
+        if lemma == Lemma.NO_COLLISION:
             hits = []
             for j, piece in enumerate(_pieces(dec, *origin)):
                 t, bounds = _param(f"t{j}")
@@ -261,7 +266,7 @@ def build(model: Model, lemma: str, form: str, rule: Rule, k: int, initial: bool
         dec_s = decide(others, model, "s")
         asserts += dec_s.side
         asserts += [z3.Or(*[dec_s.is_rule(r) for r in MOVING]), dec_s.moves]
-        if lemma == "no-collision":
+        if lemma == Lemma.NO_COLLISION:
             asserts.append(_two_movers_close(model, dec, dec_s, o))
         else:
             ex, ey = o.x + dec_s.dx, o.y + dec_s.dy

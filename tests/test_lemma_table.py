@@ -1,0 +1,102 @@
+"""The lemma table in ``properties.py`` is the only place a lemma is named: no other module of the
+package spells a lemma name as a string, and the table itself is well formed."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+from fatline_verify.cli.prove import LEMMA_CHOICES
+from fatline_verify.properties import CHECKED, FLAG, SAFETY, SPECS, Judged, Lemma
+from fatline_verify.report.pages import PROVER_LEMMAS
+from fatline_verify.smt.obligations import LEMMAS
+
+PACKAGE = Path(__file__).resolve().parent.parent / "fatline_verify"
+TABLE = PACKAGE / "properties.py"
+NAMES = {lemma.value for lemma in Lemma}
+
+
+def _docstrings(tree: ast.Module) -> set[int]:
+    """The ids of the docstring nodes: the first statement of the module, a class or a function
+    when it is a string expression."""
+    out = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Module | ast.ClassDef | ast.FunctionDef | ast.AsyncFunctionDef) and node.body:
+            first = node.body[0]
+            if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant):
+                out.add(id(first.value))
+    return out
+
+
+def literals_in(source: str, where: str) -> list[str]:
+    """``where:line: 'name'`` for every string constant of ``source`` equal to a lemma name
+    (docstrings aside), in source order."""
+    tree = ast.parse(source, filename=where)
+    skip = _docstrings(tree)
+    hits = [
+        node
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value in NAMES
+        if id(node) not in skip
+    ]
+    return [f"{where}:{node.lineno}: {node.value!r}" for node in sorted(hits, key=lambda n: (n.lineno, n.col_offset))]
+
+
+def lemma_literals(path: Path) -> list[str]:
+    """The lemma names spelled in one file of the package."""
+    return literals_in(path.read_text(encoding="utf-8"), path.relative_to(PACKAGE.parent).as_posix())
+
+
+def test_no_lemma_name_outside_the_table():
+    found = [hit for path in sorted(PACKAGE.rglob("*.py")) if path != TABLE for hit in lemma_literals(path)]
+    assert not found, "lemma names spelled outside properties.py (use the Lemma members):\n" + "\n".join(found)
+
+
+def test_the_scan_sees_literals_and_skips_docstrings():
+    source = "\n".join(
+        [
+            '"""connectivity"""',
+            "class C:",
+            '    """progress"""',
+            "def f():",
+            '    """termination"""',
+            '    return {"no-collision": f"{1}approach", "x": "rma-fixed"}',
+            'g = f"connectivity-edge"',
+        ]
+    )
+    assert literals_in(source, "m.py") == [
+        "m.py:6: 'no-collision'",
+        "m.py:6: 'approach'",
+        "m.py:6: 'rma-fixed'",
+        "m.py:7: 'connectivity-edge'",
+    ]
+
+
+def test_checked_lemmas_in_report_order():
+    assert [lemma.value for lemma in CHECKED] == [
+        "connectivity",
+        "no-collision",
+        "progress",
+        "rma-fixed",
+        "approach",
+        "termination",
+    ]
+    assert Lemma.CONNECTIVITY_EDGE not in CHECKED
+    assert not SPECS[Lemma.CONNECTIVITY_EDGE].checked
+    assert set(SPECS) == set(Lemma)
+
+
+def test_safety_flags_are_distinct_bits():
+    assert SAFETY
+    assert all(SPECS[lemma].judged is Judged.STEP for lemma in SAFETY)
+    flags = [FLAG[lemma] for lemma in SAFETY]
+    assert all(f > 0 and f & (f - 1) == 0 for f in flags), flags
+    assert len(set(flags)) == len(flags), flags
+    assert set(FLAG) == set(SAFETY)
+    assert all(lemma.flag == FLAG[lemma] for lemma in SAFETY)
+
+
+def test_prover_lemmas_named_alike():
+    """The CLI's ``--lemma`` choices and the report's prover columns name the obligations' lemmas
+    (they cannot import them: that would load z3)."""
+    assert LEMMA_CHOICES == LEMMAS == PROVER_LEMMAS
