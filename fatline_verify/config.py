@@ -138,7 +138,10 @@ class Model:
         p = self.parameters
         diff = self.options.differences()
         readings = ", ".join(f"{k}={v}" for k, v in diff.items()) or "every default reading"
-        return f"{self.name}: rad_v={format_number(p.rad_v)}, q={p.q}, delta={format_number(p.delta)}; {readings}"
+        steps = f", async_steps={p.async_steps}" if self.options.scheduler is Scheduler.ASYNC else ""
+        return (
+            f"{self.name}: rad_v={format_number(p.rad_v)}, q={p.q}, delta={format_number(p.delta)}{steps}; {readings}"
+        )
 
 
 _TOP_KEYS = {"name", "description", "parameters", "options", "bounds", "expected"}

@@ -349,13 +349,18 @@ def table(headers: list[str], rows: list[list[str]]) -> list[str]:
 
 def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[str]:
     """The summary of a :class:`fatline_verify.checker.CheckResult`."""
+    from .systems import system_for
+
     model = result.model
+    system = system_for(model)
+    word = system.step_word
     w, h = result.window
     lines = [
         f"model {model.describe()}",
         f"window {w}x{h} lattice points, at most {result.max_states} states per robot count",
     ]
     lines.append("")
+    fine = system.scale > 1 or any(s.off_lattice for s in result.stats)
     rows = []
     for s in result.stats:
         rows.append(
@@ -365,6 +370,7 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
                 str(s.states),
                 str(s.transitions),
                 str(s.escaped),
+                *([str(s.off_lattice)] if fine else []),
                 str(s.violating_only),
                 "yes" if s.truncated else "no",
                 f"{s.seconds:.2f}",
@@ -372,7 +378,18 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
             ]
         )
     lines += table(
-        ["robots", "initial", "states", "transitions", "escaped", "violating-only", "truncated", "seconds", "engine"],
+        [
+            "robots",
+            "initial",
+            "states",
+            "transitions",
+            "escaped",
+            *(["off-lattice"] if fine else []),
+            "violating-only",
+            "truncated",
+            "seconds",
+            "engine",
+        ],
         rows,
     )
     lines.append("")
@@ -380,21 +397,27 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
     for lemma in CHECKED:
         for r in (x for x in result.results if x.lemma is lemma):
             trace = trace_paths.get((lemma.value, r.robots), "")
-            witness = "" if r.witness_rounds is None else f"{r.witness_rounds} rounds"
+            witness = "" if r.witness_rounds is None else f"{r.witness_rounds} {word}s"
             rows.append([lemma.value, str(r.robots), r.verdict.value, witness, r.reason, trace])
     lines += table(["lemma", "robots", "verdict", "witness", "detail", "trace"], rows)
     lines.append("")
     if result.after_violation == "stop":
         lines.append(
-            "States reached only through a violating round are not explored further; liveness verdicts are over "
+            f"States reached only through a violating {word} are not explored further; liveness verdicts are over "
             "executions that break no safety lemma."
         )
     else:
-        lines.append("States reached through violating rounds are explored further (--after-violation continue).")
+        lines.append(f"States reached through violating {word}s are explored further (--after-violation continue).")
+    off = (
+        f" off-lattice = successors (counted in escaped) with a robot between points of the {system.scale}-times "
+        "finer lattice (a move decided on a halfway view), not explored;"
+        if fine
+        else ""
+    )
     lines += [
         "Columns: initial = initial configurations up to translation; escaped = successors outside the window "
-        "(not explored); violating-only = states reached only through a violating round; witness = rounds in the "
-        "shortest witness (replayed before it is reported).",
+        f"(not explored);{off} violating-only = states reached only through a violating {word}; witness = {word}s "
+        "in the shortest witness (replayed before it is reported).",
         "A lemma that holds, holds for these robot counts and this window only. "
         + {
             "VIOLATED": "Exit code 1: violations were found.",
