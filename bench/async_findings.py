@@ -31,6 +31,7 @@ def main() -> None:
     parser.add_argument("--window", default="9x9")
     parser.add_argument("--steps", type=int, default=None, help="async_steps (default: the model's)")
     parser.add_argument("--traces", default=None, help="write the ASYNC-only witnesses here")
+    parser.add_argument("--max-states", type=int, default=None, help="state bound (default: the model's)")
     args = parser.parse_args()
     robots, window = parse_robots(args.robots), parse_window(args.window)
     names = args.model or [p.stem for p in shipped_models() if "async" not in p.stem]
@@ -47,13 +48,14 @@ def main() -> None:
             parameters=replace(model.parameters, async_steps=steps),
         )
         t0 = time.perf_counter()
-        sync = check(model, robots, window)
+        sync = check(model, robots, window, max_states=args.max_states)
         t1 = time.perf_counter()
-        asyn = check(amodel, robots, window)
+        asyn = check(amodel, robots, window, max_states=args.max_states)
         t2 = time.perf_counter()
+        cut = " (truncated)" if any(s.truncated for s in (*sync.stats, *asyn.stats)) else ""
         print(
             f"{name}: {model.options.scheduler} {sum(s.states for s in sync.stats):,} states {t1 - t0:.1f} s; "
-            f"async (K={steps}) {sum(s.states for s in asyn.stats):,} states {t2 - t1:.1f} s",
+            f"async (K={steps}) {sum(s.states for s in asyn.stats):,} states {t2 - t1:.1f} s{cut}",
             flush=True,
         )
         for lemma in CHECKED:

@@ -181,7 +181,7 @@ def test_a_round_trace_does_not_replay_as_events():
 
     fixture = next((ROOT / "tests" / "fixtures" / "traces-v1").glob("paper-check-connectivity-n2.json"))
     doc = load_trace(fixture)
-    with pytest.raises(InvalidTrace, match="a round in an asynchronous trace; expected an event"):
+    with pytest.raises(InvalidTrace, match="a round, but model paper has scheduler=async, which plays events"):
         check_replay(doc, asynchronous(load_model("paper")))
 
 
@@ -245,3 +245,15 @@ def test_check_gives_async_verdicts_with_replayed_witnesses():
             assert all("event" in step for step in r.witness["rounds"])
             check_replay(json.loads(json.dumps(r.witness)), model)
     assert result.stats[1].states > check(load_model("paper"), (3, 3), (7, 7)).stats[0].states
+
+
+def test_the_shipped_stale_snapshot_trace_replays_under_paper_async_and_not_under_paper():
+    from fatline_verify.errors import InvalidTrace
+
+    path = ROOT / "tests" / "fixtures" / "async" / "paper-async-stale-snapshot-collision-n4.json"
+    doc = load_trace(path)
+    run = check_replay(doc)
+    assert run.outcome is Outcome.VIOLATION and doc["violation"]["property"] == Lemma.NO_COLLISION
+    assert check_replay(doc, load_model("paper-async")).outcome is Outcome.VIOLATION
+    with pytest.raises(InvalidTrace, match="which plays rounds; expected a model with scheduler=async"):
+        check_replay(doc, load_model("paper"))

@@ -37,15 +37,21 @@ def _first(diffs: list[str]) -> str:
     return f"{diffs[0]}{more}"
 
 
+def _word(doc: dict[str, Any]) -> str:
+    """What a step of this trace is called: "event" for asynchronous traces, else "round"."""
+    return "event" if any("event" in r for r in doc["rounds"]) else "round"
+
+
 def _what_happens(again: dict[str, Any]) -> str:
-    """The replayed outcome and every round that violates a lemma, for the "gone" message."""
+    """The replayed outcome and every step that violates a lemma, for the "gone" message."""
+    word = _word(again)
     violating = [
-        f"round {k} violates {', '.join(dict.fromkeys(v['property'] for v in r['violations']))}"
+        f"{word} {k} violates {', '.join(dict.fromkeys(v['property'] for v in r['violations']))}"
         for k, r in enumerate(again["rounds"], start=1)
         if r["violations"]
     ]
     return f"replayed outcome {again['outcome']}; " + (
-        "; ".join(violating) if violating else "no round violates a lemma"
+        "; ".join(violating) if violating else f"no {word} violates a lemma"
     )
 
 
@@ -60,7 +66,7 @@ def not_reproduced(doc: dict[str, Any], run: Run, diffs: list[str], other: Model
     if recorded:
         if again["violation"] is None:
             k = recorded.get("round")
-            where = "" if k is None else f" in round {k}" if k else " in the initial configuration"
+            where = "" if k is None else f" in {_word(doc)} {k}" if k else " in the initial configuration"
             return (
                 f"the counterexample is gone under {name}: {recorded['property']} is no longer violated{where} "
                 f"({_what_happens(again)})"
@@ -90,9 +96,10 @@ def cmd_replay(args: argparse.Namespace) -> int:
             worst = max(worst, EXIT_FOUND)
             continue
         v = doc["violation"]
-        what = f"{doc['outcome']}" + (f" ({v['property']} in round {v['round']})" if v else "")
+        word = _word(doc)
+        what = f"{doc['outcome']}" + (f" ({v['property']} in {word} {v['round']})" if v else "")
         under = f" under {override.name}" if override is not None else ""
-        lines = [f"{name}: reproduces{under}: {len(run.rounds)} rounds, {what}"]
+        lines = [f"{name}: reproduces{under}: {len(run.rounds)} {word}s, {what}"]
         if args.verbose:
             lines += ["  " + line for line in trace_lines(doc, override)]
         if picture is not None:
@@ -116,7 +123,7 @@ def register(sub: Any) -> None:
         help="replay under this model instead of the trace's own: a trace that does not reproduce says whether "
         "its counterexample is gone under it or still there with other values",
     )
-    p.add_argument("-v", "--verbose", action="store_true", help="print every round")
-    p.add_argument("--picture", metavar="DIR", help="write one SVG picture per round of each trace into DIR")
+    p.add_argument("-v", "--verbose", action="store_true", help="print every round (or event)")
+    p.add_argument("--picture", metavar="DIR", help="write one SVG picture per round (or event) of each trace into DIR")
     add_force(p)
     p.set_defaults(handler=cmd_replay)

@@ -16,6 +16,7 @@ from typing import Any
 
 from ..options import CATALOGUE
 from ..properties import CHECKED, Lemma
+from ..systems import system_for
 from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, prove_row, violation_line
 from .data import ModelReport
 
@@ -51,6 +52,7 @@ th { background: #f3f3f3; }
 .PROVED { background: #c8ecc8; } .INCONCLUSIVE { background: #fff4d6; }
 table.matrix { width: 100%; font-size: 0.85em; }
 .matrix th { font-weight: 600; }
+.matrix th, .matrix td { padding: 0.3em 0.45em; }
 .matrix th.group { text-align: center; }
 .matrix td.readings { min-width: 10em; max-width: 14em; }
 .matrix td.readings code { font-size: 0.95em; }
@@ -140,13 +142,24 @@ def _md_table(headers: list[str], rows: list[list[str]]) -> list[str]:
     return out
 
 
+def _word(report: ModelReport) -> str:
+    """What one step of the model's scheduler is called ("round", "event")."""
+    return system_for(report.model).step_word
+
+
+def _fine(report: ModelReport) -> bool:
+    """Whether the search table has an off-lattice column (a system on a finer lattice, ASYNC)."""
+    return system_for(report.model).scale > 1
+
+
 def _check_rows(report: ModelReport) -> list[list[str]]:
+    word = _word(report)
     return [
         [
             r["lemma"],
             str(r["robots"]),
             r["verdict"],
-            "" if r["witness_rounds"] is None else f"{r['witness_rounds']} rounds",
+            "" if r["witness_rounds"] is None else f"{r['witness_rounds']} {word}s",
             r["reason"],
             f"[trace](../traces/{r['trace'].split('/')[-1]})" if r.get("trace") else "",
         ]
@@ -162,12 +175,35 @@ def _search_rows(report: ModelReport) -> list[list[str]]:
             str(s["states"]),
             str(s["transitions"]),
             str(s["escaped"]),
+            *([str(s.get("off_lattice", 0))] if _fine(report) else []),
             str(s["violating_only"]),
             "yes" if s["truncated"] else "no",
             f"{s['seconds']:.2f}",
         ]
         for s in report.check["searches"]
     ]
+
+
+def _not_encoded(report: ModelReport) -> str:
+    """One sentence instead of the prover table when no obligation was run: every row INCONCLUSIVE for
+    the same reason (a scheduler the prover does not encode)."""
+    rows = report.prove["obligations"]
+    reasons = {r["reason"] for r in rows}
+    if not rows or len(reasons) != 1 or any(r["verdict"] != "INCONCLUSIVE" or r["seconds"] for r in rows):
+        return ""
+    return f"All {len(rows)} obligations INCONCLUSIVE, none run: {reasons.pop()}."
+
+
+def _search_head(report: ModelReport) -> list[str]:
+    if not _fine(report):
+        return SEARCH_HEAD
+    return [*SEARCH_HEAD[:5], "off-lattice", *SEARCH_HEAD[5:]]
+
+
+def _parameters(report: ModelReport) -> str:
+    p = report.model.parameters
+    steps = f", async_steps={p.async_steps}" if _fine(report) else ""
+    return f"rad_v={p.rad_v}, q={p.q}, delta={p.delta}{steps}"
 
 
 def _prove_rows(report: ModelReport) -> list[list[str]]:
@@ -204,8 +240,7 @@ def model_markdown(report: ModelReport) -> str:
         "",
         m.description,
         "",
-        f"Readings: {_readings(report)} ([what the readings mean](../{DOCS_LINK})). "
-        f"Parameters: rad_v={m.parameters.rad_v}, q={m.parameters.q}, delta={m.parameters.delta}.",
+        f"Readings: {_readings(report)} ([what the readings mean](../{DOCS_LINK})). Parameters: {_parameters(report)}.",
         "",
         f"Regenerate: `fatline report models/{m.name}.toml` (reuses the cached results while they are up to date; "
         "`--refresh` recomputes). [HTML version with a step-through viewer](index.html).",
@@ -213,13 +248,15 @@ def model_markdown(report: ModelReport) -> str:
         "## Bounded model checker",
         "",
         f"Robots {b.robots[0]}..{b.robots[1]}, window {b.window[0]}x{b.window[1]} lattice points, "
-        f"at most {b.max_states} states. States reached only through a violating round are not explored further.",
+        f"at most {b.max_states} states. States reached only through a violating {_word(report)} are not explored "
+        "further.",
         "",
     ]
-    lines += [*_md_table(SEARCH_HEAD, _search_rows(report)), ""]
+    lines += [*_md_table(_search_head(report), _search_rows(report)), ""]
     lines += [*_md_table(CHECK_HEAD, _check_rows(report)), ""]
     lines += ["## Prover (z3, any swarm size)", "", f"Solver: {report.prove['solver']}.", ""]
-    lines += [*_md_table(PROVE_HEAD, _prove_rows(report)), ""]
+    unproved = _not_encoded(report)
+    lines += [unproved, ""] if unproved else [*_md_table(PROVE_HEAD, _prove_rows(report)), ""]
     lines += ["## Counterexamples", "", "Long numbers are rounded (≈); the trace files hold them exactly.", ""]
     for t in report.traces:
         lines += [
@@ -288,10 +325,12 @@ def model_html(report: ModelReport) -> str:
         "mean</a>). <a href='../index.html'>All models</a>.</p>",
         f"<h2>Bounded model checker</h2><p>Robots {b.robots[0]}..{b.robots[1]}, "
         f"window {b.window[0]}x{b.window[1]}.</p>",
-        _html_table(SEARCH_HEAD, _search_rows(report)),
+        _html_table(_search_head(report), _search_rows(report)),
         _html_table(CHECK_HEAD, _check_rows(report), verdict_col=2),
         f"<h2>Prover</h2><p>Solver: {html.escape(report.prove['solver'])}.</p>",
-        _html_table(PROVE_HEAD, _prove_rows(report), verdict_col=3),
+        f"<p>{html.escape(_not_encoded(report))}</p>"
+        if _not_encoded(report)
+        else _html_table(PROVE_HEAD, _prove_rows(report), verdict_col=3),
         "<h2>Counterexamples</h2>",
     ]
     parts += [viewer(t) for t in report.traces]

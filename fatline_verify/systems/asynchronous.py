@@ -324,7 +324,10 @@ class AsyncSystem:
 
     def action_from_json(self, record: dict[str, Any], n: int, where: str) -> Event:
         if "event" not in record:
-            raise InvalidTrace(f"{where}: a round in an asynchronous trace; expected an event")
+            raise InvalidTrace(
+                f"{where}: a round, but model {self.model.name} has scheduler=async, which plays events; expected a "
+                "model with a round scheduler (ssync, fsync, centralized)"
+            )
         robot = record["robot"]
         if robot >= n:
             raise InvalidTrace(f"{where}/robot: robot {robot} does not exist; expected 0..{n - 1}")

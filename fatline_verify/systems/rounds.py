@@ -158,7 +158,10 @@ class RoundSystem:
 
     def action_from_json(self, record: dict[str, Any], n: int, where: str) -> tuple[int, ...]:
         if "active" not in record or "event" in record:
-            raise InvalidTrace(f"{where}: an asynchronous event in a {self.kind} trace; expected a round")
+            raise InvalidTrace(
+                f"{where}: an asynchronous event, but model {self.model.name} has scheduler={self.kind}, which plays "
+                "rounds; expected a model with scheduler=async"
+            )
         bad = [i for i in record["active"] if i >= n]
         if bad:
             raise InvalidTrace(f"{where}/active: robot {bad[0]} does not exist; expected 0..{n - 1}")
