@@ -16,21 +16,7 @@ from fatline_verify.explore.search import explore
 from fatline_verify.systems import system_for
 from fatline_verify.systems.base import Expansion
 from tests.conftest import make_model
-
-FIELDS = [
-    "keys",
-    "parent",
-    "parent_action",
-    "depth",
-    "enabled",
-    "goal",
-    "edge_src",
-    "edge_dst",
-    "edge_action",
-    "edge_flags",
-    "edge_fits",
-    "edge_exact",
-]
+from tests.test_explore import FIELDS
 
 READINGS = [
     {},

@@ -21,11 +21,10 @@ import numpy as np
 
 from ..algorithm import decide
 from ..config import Model
-from ..options import Goal
 from ..properties import Lemma
 from ..schedule import closest_dist2, collides
 from ..systems.base import Expansion
-from .lattice import connected
+from .lattice import connected, goal_positions
 
 _CORNER_NONE, _CORNER_H, _CORNER_V = 0, 1, 2
 
@@ -201,27 +200,7 @@ class FastEngine:
 
     # --- goal -------------------------------------------------------------------------------
     def _goal(self, states: np.ndarray) -> np.ndarray:
-        goal = self.model.options.goal
-        x = states[..., 0]
-        if goal is Goal.VERTICAL_LINE:
-            return (x == x[:, :1]).all(axis=1)
-        a = states[:, :, None, :]  # line through a and b, test point c
-        b = states[:, None, :, :]
-        ab = b - a  # (m, n, n, 2)
-        ac = states[:, None, None, :, :] - a[:, :, :, None, :]  # (m, n, 1->n, n, 2) broadcast
-        crossv = ab[..., None, 0] * ac[..., 1] - ab[..., None, 1] * ac[..., 0]  # (m, n, n, n)
-        distinct = (ab != 0).any(axis=-1)
-        if goal is Goal.ANY_LINE:
-            line = (crossv == 0).all(axis=-1) & distinct
-            all_same = (states == states[:, :1]).all(axis=(1, 2))
-            return line.any(axis=(1, 2)) | all_same | (states.shape[1] <= 2)
-        w = 2 * self.model.radius
-        limit = w * w * (ab * ab).sum(axis=-1)
-        one_side = (crossv >= 0).all(axis=-1) | (crossv <= 0).all(axis=-1)
-        fits = one_side & (crossv * crossv <= limit[..., None]).all(axis=-1) & distinct
-        uniq = np.sort(states[..., 0] * 1_000_003 + states[..., 1], axis=1)
-        few = (np.diff(uniq, axis=1) != 0).sum(axis=1) + 1 < 3
-        return fits.any(axis=(1, 2)) | few
+        return goal_positions(states, self.model.options.goal, 2 * self.model.radius)
 
     # --- the expansion ----------------------------------------------------------------------
     def expand(self, states: np.ndarray) -> Expansion:

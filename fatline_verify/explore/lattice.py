@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..config import Model
+from ..options import Goal
 
 
 def canonical(states: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -66,22 +67,48 @@ class KeyCodec:
 
 
 def connected(states: np.ndarray, model: Model) -> np.ndarray:
-    """Per state, whether its visibility graph is connected: a flood fill over int64 bitmasks."""
-    m, n, _ = states.shape
+    """Per state, whether its visibility graph is connected."""
+    return connected_within(states, model.view2)
+
+
+def connected_within(pos: np.ndarray, view2: int) -> np.ndarray:
+    """Per state ``(m, n, 2)``, whether the graph of pairs at squared distance at most ``view2`` is
+    connected (int64 throughout: positions may be in a fine unit)."""
+    m, n, _ = pos.shape
     if n <= 1:
         return np.ones(m, dtype=bool)
-    x = states[..., 0].astype(np.int32)
-    y = states[..., 1].astype(np.int32)
-    dx = x[:, :, None] - x[:, None, :]
-    dy = y[:, :, None] - y[:, None, :]
-    adj = dx * dx + dy * dy <= model.view2
-    bits = np.zeros((m, n), dtype=np.int64)
-    for j in range(n):
-        bits |= adj[:, :, j].astype(np.int64) << j  # (m, n) neighbour sets
+    d = pos[:, :, None, :] - pos[:, None, :, :]
+    adj = (d * d).sum(axis=-1) <= view2  # (m, n, n)
+    nbrs = (adj.astype(np.int64) << np.arange(n, dtype=np.int64)).sum(axis=2)  # (m, n) neighbour sets
     reach = np.ones(m, dtype=np.int64)
     for _ in range(n - 1):
         grown = reach.copy()
         for i in range(n):
-            grown |= np.where((reach >> i) & 1 == 1, bits[:, i], 0)
+            grown |= np.where((reach >> i) & 1 == 1, nbrs[:, i], 0)
         reach = grown
-    return reach == (1 << n) - 1
+    return reach == (1 << n) - 1  # type: ignore[no-any-return]
+
+
+def goal_positions(pos: np.ndarray, goal: Goal, width: int) -> np.ndarray:
+    """Per state ``(m, n, 2)`` (integer positions in any unit), whether it forms the goal line;
+    ``width`` is the strip width of ``line-meets-discs`` in that unit."""
+    m, n, _ = pos.shape
+    if goal is Goal.VERTICAL_LINE:
+        x = pos[..., 0]
+        return (x == x[:, :1]).all(axis=1)  # type: ignore[no-any-return]
+    if n <= 2:
+        return np.ones(m, dtype=bool)
+    a = pos[:, :, None, :]  # the line through robots a and b, every robot c tested against it
+    ab = pos[:, None, :, :] - a  # (m, n, n, 2)
+    ac = pos[:, None, None, :, :] - a[:, :, :, None, :]  # (m, n, 1, n, 2)
+    crossv = ab[..., None, 0] * ac[..., 1] - ab[..., None, 1] * ac[..., 0]  # (m, n, n, n)
+    distinct = (ab != 0).any(axis=-1)
+    uniq = np.sort(pos[..., 0] * 1_000_003 + pos[..., 1], axis=1)
+    few = (np.diff(uniq, axis=1) != 0).sum(axis=1) + 1 < 3
+    if goal is Goal.ANY_LINE:
+        line = (crossv == 0).all(axis=-1) & distinct
+        return line.any(axis=(1, 2)) | few  # type: ignore[no-any-return]
+    limit = width * width * (ab * ab).sum(axis=-1)
+    one_side = (crossv >= 0).all(axis=-1) | (crossv <= 0).all(axis=-1)
+    fits = one_side & (crossv * crossv <= limit[..., None]).all(axis=-1) & distinct
+    return fits.any(axis=(1, 2)) | few  # type: ignore[no-any-return]
