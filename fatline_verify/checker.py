@@ -25,7 +25,8 @@ from .explore.search import Exploration, explore
 from .explore.witness import lasso_run, lasso_witness, state_witness, transition_witness
 from .outputs import Kind, child
 from .properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason, Verdict
-from .systems import Engine, system_for
+from .systems import system_for
+from .systems.base import ENGINES, unknown_engine
 from .trace import approach_stuck
 
 ProgressFn = Callable[[str, int, int, str], None]
@@ -76,13 +77,8 @@ class CheckResult:
         return any(r.verdict is Verdict.INCONCLUSIVE for r in self.results)
 
 
-def make_engine(name: str, model: Model) -> Engine:
-    """The named exploration engine for ``model``'s transition system."""
-    return system_for(model).engine(name)
-
-
 def validate_bounds(
-    robots: tuple[int, int], window: tuple[int, int], max_states: int, engine: str = "fast", model: Model | None = None
+    model: Model, robots: tuple[int, int], window: tuple[int, int], max_states: int, engine: str = "fast"
 ) -> None:
     """Reject bounds no search can meet, naming the value."""
     if engine == "fast" and max(window) > 128:
@@ -95,7 +91,7 @@ def validate_bounds(
     w, h = window
     if w < 1 or h < 1:
         raise InvalidInput(f"window={w}x{h}: expected a positive width and height")
-    system = system_for(model or Model())
+    system = system_for(model)
     for n in range(robots[0], robots[1] + 1):
         try:
             system.codec(n, window)
@@ -168,9 +164,9 @@ class CheckPlan:
         robots = model.bounds.robots if robots is None else robots
         window = model.bounds.window if window is None else window
         max_states = model.bounds.max_states if max_states is None else max_states
-        if engine not in ("fast", "scalar"):
-            raise InvalidInput(f"engine={engine!r}: expected scalar or fast")
-        validate_bounds(robots, window, max_states, engine, model)
+        if engine not in ENGINES:
+            raise unknown_engine(engine)
+        validate_bounds(model, robots, window, max_states, engine)
         validate_resources(model, robots, window)
         return cls(model, robots, window, max_states, engine, after_violation)
 

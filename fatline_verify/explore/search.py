@@ -72,11 +72,6 @@ class Exploration:
         return int((~self.edge_exact).sum())
 
     @property
-    def acting(self) -> np.ndarray:
-        """Per transition, the robots that act in it (bitmask, canonical order of the source)."""
-        return self.edge_action & ((1 << self.n) - 1)  # type: ignore[no-any-return]
-
-    @property
     def violating_only(self) -> int:
         """Transitions whose destination was reached only through a violating round (not explored)."""
         return int(((self.edge_dst < 0) & self.edge_fits & (self.edge_flags != 0)).sum())

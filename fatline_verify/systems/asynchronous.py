@@ -46,7 +46,7 @@ from ..numbers import Point, normalize
 from ..options import Motion, Scheduler
 from ..schedule import Violation, collisions, disconnection, global_path, rma_violations, snapshot
 from ..swarm import State, is_goal
-from .base import Codec, Engine, Marks
+from .base import Codec, Engine, Marks, pick_engine
 from .rounds import MAX_SCHEDULE_STEPS
 
 CORNER_NONE, CORNER_H, CORNER_V = 0, 1, 2
@@ -392,15 +392,12 @@ class AsyncSystem:
         return pos
 
     def engine(self, name: str) -> Engine:
-        if name == "scalar":
-            from ..explore.scalar import ScalarEngine
-
-            return ScalarEngine(self)
-        if name == "fast":
+        def fast() -> Engine:
             from ..explore.fast_async import FastAsyncEngine
 
             return FastAsyncEngine(self)
-        raise InvalidInput(f"engine={name!r}: expected scalar or fast")
+
+        return pick_engine(self, name, fast)
 
 
 # --- array helpers (shared by the engines) --------------------------------------------------------

@@ -23,7 +23,7 @@ robot of an asynchronous event); liveness reads fairness from them. Higher bits 
 from __future__ import annotations
 
 import random
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any, Protocol
 
@@ -31,6 +31,7 @@ import numpy as np
 
 from ..algorithm import Decision
 from ..config import Model
+from ..errors import InvalidInput
 from ..geometry import Path
 from ..numbers import Point
 from ..options import Scheduler
@@ -260,4 +261,35 @@ class TransitionSystem(Protocol):
     """How many array units make one base lattice unit."""
 
 
-__all__ = ["Codec", "Engine", "Expansion", "Marks", "Step", "TransitionSystem"]
+ENGINES = ("fast", "scalar")
+"""The engine names every system answers to (:func:`pick_engine`)."""
+
+
+def unknown_engine(name: str) -> InvalidInput:
+    """The one-line error for an engine name not in :data:`ENGINES`."""
+    return InvalidInput(f"engine={name!r}: expected scalar or fast")
+
+
+def pick_engine(system: TransitionSystem, name: str, fast: Callable[[], Engine]) -> Engine:
+    """A system's :meth:`TransitionSystem.engine`: the shared reference engine for ``scalar``, the
+    system's own vectorised one (``fast()``) for ``fast``."""
+    if name == "scalar":
+        from ..explore.scalar import ScalarEngine
+
+        return ScalarEngine(system)
+    if name == "fast":
+        return fast()
+    raise unknown_engine(name)
+
+
+__all__ = [
+    "ENGINES",
+    "Codec",
+    "Engine",
+    "Expansion",
+    "Marks",
+    "Step",
+    "TransitionSystem",
+    "pick_engine",
+    "unknown_engine",
+]

@@ -22,7 +22,7 @@ from ..options import Scheduler
 from ..schedule import RoundResult, decide_all, enabled, global_path, play_round
 from ..schedulers import RoundScheduler, round_scheduler
 from ..swarm import State, is_goal
-from .base import Codec, Engine, Marks
+from .base import Codec, Engine, Marks, pick_engine
 
 MAX_SCHEDULE_STEPS = 1_000_000
 """The longest explicit schedule accepted (rounds or events)."""
@@ -187,15 +187,12 @@ class RoundSystem:
         return states
 
     def engine(self, name: str) -> Engine:
-        if name == "scalar":
-            from ..explore.scalar import ScalarEngine
-
-            return ScalarEngine(self)
-        if name == "fast":
+        def fast() -> Engine:
             from ..explore.fast import FastEngine
 
             return FastEngine(self)
-        raise InvalidInput(f"engine={name!r}: expected scalar or fast")
+
+        return pick_engine(self, name, fast)
 
 
 __all__ = ["MAX_SCHEDULE_STEPS", "RoundSystem"]
