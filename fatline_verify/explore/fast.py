@@ -14,6 +14,7 @@ Subset enumeration, positions after, connectivity, the RMA and the goal are plai
 
 from __future__ import annotations
 
+from functools import partial
 from math import isqrt
 from typing import Any
 
@@ -24,33 +25,9 @@ from ..config import Model
 from ..properties import Lemma
 from ..schedule import closest_dist2, collides
 from ..systems.base import Expansion
-from .lattice import connected, goal_positions
+from .lattice import KeyTable, connected, goal_positions
 
 _CORNER_NONE, _CORNER_H, _CORNER_V = 0, 1, 2
-
-
-class _Table:
-    """A growing int64-keyed table of small integer rows, looked up with ``searchsorted``."""
-
-    def __init__(self, width: int) -> None:
-        self.keys = np.zeros(0, dtype=np.int64)
-        self.rows = np.zeros((0, width), dtype=np.int64)
-
-    def missing(self, keys: np.ndarray) -> np.ndarray:
-        uniq = np.unique(keys)
-        if not len(self.keys):
-            return uniq
-        pos = np.minimum(np.searchsorted(self.keys, uniq), len(self.keys) - 1)
-        return uniq[self.keys[pos] != uniq]
-
-    def add(self, keys: np.ndarray, rows: np.ndarray) -> None:
-        allk = np.concatenate([self.keys, keys])
-        allr = np.concatenate([self.rows, rows])
-        order = np.argsort(allk, kind="stable")
-        self.keys, self.rows = allk[order], allr[order]
-
-    def get(self, keys: np.ndarray) -> np.ndarray:
-        return self.rows[np.searchsorted(self.keys, keys)]
 
 
 class FastEngine:
@@ -67,8 +44,8 @@ class FastEngine:
         self.reach = isqrt(model.view2)
         self.side = 2 * self.reach + 1
         self.cell_bits = int(self.side * self.side).bit_length()
-        self.decisions = _Table(3)  # dx, dy, corner kind
-        self.pairs = _Table(1)  # collides?
+        self.decisions = KeyTable(3)  # dx, dy, corner kind
+        self.pairs = KeyTable(1)  # collides?
 
     # --- decisions --------------------------------------------------------------------------
     def _snapshot_keys(self, states: np.ndarray) -> np.ndarray:
@@ -99,11 +76,11 @@ class FastEngine:
 
     def _destinations(self, states: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         n = states.shape[1]
-        keys = self._snapshot_keys(states)
-        new = self.decisions.missing(keys.ravel())
-        if len(new):
-            rows = np.zeros((len(new), 3), dtype=np.int64)
-            for r, key in enumerate(new.tolist()):
+        keys = self._snapshot_keys(states).ravel()
+
+        def decide_new(first: np.ndarray) -> np.ndarray:
+            rows = np.zeros((len(first), 3), dtype=np.int64)
+            for r, key in enumerate(keys[first].tolist()):
                 d = self.rule(self._decode_snapshot(key, n), self.model)
                 dest = d.destination
                 if any(not isinstance(v, int) for v in dest):
@@ -112,8 +89,9 @@ class FastEngine:
                 if len(d.path) == 3:
                     corner = _CORNER_H if d.path[1][1] == 0 else _CORNER_V
                 rows[r] = (dest[0], dest[1], corner)
-            self.decisions.add(new, rows)
-        got = self.decisions.get(keys.ravel()).reshape(*keys.shape, 3)
+            return rows
+
+        got = self.decisions.lookup(keys, decide_new).reshape(*states.shape[:2], 3)
         return got[..., :2], got[..., 2]
 
     # --- collisions -------------------------------------------------------------------------
@@ -179,12 +157,14 @@ class FastEngine:
             for f in fields:
                 key = (key << 8) | (f + 128)
             key = (key << 2 | ca) << 2 | cb
-            new = self.pairs.missing(key.ravel())
-            if len(new):
-                self.pairs.add(new, np.array([[self._pair_from_key(int(k))] for k in new.tolist()], dtype=np.int64))
-            hit = self.pairs.get(key.ravel()).reshape(key.shape).astype(bool)
-            out[:, :, c] = hit
+            flat = key.ravel()
+            rows = self.pairs.lookup(flat, partial(self._pair_rows, flat))
+            out[:, :, c] = rows.reshape(key.shape).astype(bool)
         return out
+
+    def _pair_rows(self, keys: np.ndarray, first: np.ndarray) -> np.ndarray:
+        """Collision answers (one-column rows) for ``keys[first]``."""
+        return np.array([[self._pair_from_key(int(k))] for k in keys[first]], dtype=np.int64).reshape(-1, 1)
 
     def _pair_from_key(self, key: int) -> int:
         cb, key = key & 3, key >> 2

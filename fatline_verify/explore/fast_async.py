@@ -21,7 +21,6 @@ of ``1/K^2`` lattice unit, where every point of every path at every step is an i
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from fractions import Fraction
 from math import isqrt
 from typing import Any
@@ -35,43 +34,10 @@ from ..properties import Lemma
 from ..schedule import collides
 from ..systems.asynchronous import CORNER_H, CORNER_NONE, CORNER_V, current_positions
 from ..systems.base import Expansion
-from .lattice import connected_within, goal_positions
+from .lattice import KeyTable, connected_within, goal_positions
 
 _SWEEP_BITS = 14
 """Bits per signed coordinate of a sweep key (offsets and paths within +-8191 units of ``1/K``)."""
-
-
-class _Table:
-    """A growing table of small integer rows keyed by int64 or fixed-width byte keys, looked up with
-    ``searchsorted``; rows for new keys are computed on demand."""
-
-    def __init__(self, width: int) -> None:
-        self.width = width
-        self.keys: np.ndarray | None = None
-        self.rows = np.zeros((0, width), dtype=np.int64)
-
-    def __len__(self) -> int:
-        return len(self.rows)
-
-    def lookup(self, keys: np.ndarray, compute: Callable[[np.ndarray], np.ndarray]) -> np.ndarray:
-        """Rows of ``keys`` (1-D); ``compute(first)`` gives the rows of the keys not seen yet, from the
-        index of each one's first occurrence in ``keys``."""
-        if not len(keys):
-            return np.zeros((0, self.width), dtype=np.int64)
-        uniq, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
-        if self.keys is None or not len(self.keys):
-            new = np.ones(len(uniq), dtype=bool)
-        else:
-            pos = np.minimum(np.searchsorted(self.keys, uniq), len(self.keys) - 1)
-            new = self.keys[pos] != uniq
-        if new.any():
-            rows = np.asarray(compute(first[new]), dtype=np.int64).reshape(-1, self.width)
-            allk = uniq[new] if self.keys is None else np.concatenate([self.keys, uniq[new]])
-            allr = np.concatenate([self.rows, rows])
-            order = np.argsort(allk, kind="stable")
-            self.keys, self.rows = allk[order], allr[order]
-        assert self.keys is not None
-        return self.rows[np.searchsorted(self.keys, uniq)][inverse.ravel()]  # type: ignore[no-any-return]
 
 
 class FastAsyncEngine:
@@ -91,8 +57,8 @@ class FastAsyncEngine:
         self.side = 2 * self.reach + 1
         self.cell_bits = int(self.side * self.side).bit_length()
         self.near = 2 * model.radius * self.K  # beyond this gap on an axis a robot cannot be hit
-        self.decisions = _Table(5)  # dest x K, dest y K (0 when off the lattice), corner, moves, on lattice
-        self.sweeps = _Table(1)  # collides?
+        self.decisions = KeyTable(5)  # dest x K, dest y K (0 when off the lattice), corner, moves, on lattice
+        self.sweeps = KeyTable(1)  # collides?
         self.points: dict[int, Point] = {}  # cell code -> offset in lattice units
 
     def _point(self, code: int) -> Point:

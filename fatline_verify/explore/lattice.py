@@ -8,6 +8,8 @@ into one int64: robot code ``x * h + y`` in ``bits`` bits each, in sorted order.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from ..config import Model
@@ -64,6 +66,40 @@ class KeyCodec:
             codes[:, k] = keys & mask
             keys = keys >> self.bits
         return np.stack([codes // self.h, codes % self.h], axis=-1)
+
+
+class KeyTable:
+    """A growing table of small integer rows keyed by int64 or fixed-width byte keys, looked up with
+    ``searchsorted``; rows for new keys are computed on demand. Both fast engines cache decisions
+    (by snapshot key) and collision answers (by relative-motion key) in one."""
+
+    def __init__(self, width: int) -> None:
+        self.width = width
+        self.keys: np.ndarray | None = None
+        self.rows = np.zeros((0, width), dtype=np.int64)
+
+    def __len__(self) -> int:
+        return len(self.rows)
+
+    def lookup(self, keys: np.ndarray, compute: Callable[[np.ndarray], np.ndarray]) -> np.ndarray:
+        """Rows of ``keys`` (1-D); ``compute(first)`` gives the rows of the keys not seen yet, from the
+        index of each one's first occurrence in ``keys``."""
+        if not len(keys):
+            return np.zeros((0, self.width), dtype=np.int64)
+        uniq, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+        if self.keys is None or not len(self.keys):
+            new = np.ones(len(uniq), dtype=bool)
+        else:
+            pos = np.minimum(np.searchsorted(self.keys, uniq), len(self.keys) - 1)
+            new = self.keys[pos] != uniq
+        if new.any():
+            rows = np.asarray(compute(first[new]), dtype=np.int64).reshape(-1, self.width)
+            allk = uniq[new] if self.keys is None else np.concatenate([self.keys, uniq[new]])
+            allr = np.concatenate([self.rows, rows])
+            order = np.argsort(allk, kind="stable")
+            self.keys, self.rows = allk[order], allr[order]
+        assert self.keys is not None
+        return self.rows[np.searchsorted(self.keys, uniq)][inverse.ravel()]  # type: ignore[no-any-return]
 
 
 def connected(states: np.ndarray, model: Model) -> np.ndarray:
