@@ -19,12 +19,15 @@ import numpy as np
 
 from .config import Model
 from .errors import InvalidInput
-from .explore.initial import initial_array
+from .explore.initial import initial_array, initial_keys
+from .explore.lattice import KeyCodec
 from .explore.liveness import fair_cycles
-from .explore.search import Exploration, explore
+from .explore.search import Exploration, Limit, explore_keys
 from .explore.witness import lasso_run, lasso_witness, state_witness, transition_witness
+from .explore.workers import Cluster, require_dask
 from .outputs import Kind, child
 from .properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason, Verdict
+from .resources import default_max_memory, format_size, states_for
 from .systems import system_for
 from .systems.base import ENGINES, unknown_engine
 from .trace import approach_stuck
@@ -53,6 +56,10 @@ class SearchStats:
     off_lattice: int
     truncated: bool
     seconds: float
+    bound: tuple[int, int] | None = None
+    """The exploration bound (``None``: the window)."""
+    nbytes: int = 0
+    """Bytes held by the search's arrays at the end."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -67,6 +74,10 @@ class CheckResult:
     results: tuple[LemmaResult, ...]
     complete: bool = True
     """False when the run was interrupted: only the robot counts in ``stats`` were searched."""
+    bound: tuple[int, int] | None = None
+    max_memory: int = 0
+    capped: bool = True
+    """``max_states`` was given, not derived from ``max_memory``."""
 
     @property
     def any_violated(self) -> bool:
@@ -78,12 +89,18 @@ class CheckResult:
 
 
 def validate_bounds(
-    model: Model, robots: tuple[int, int], window: tuple[int, int], max_states: int, engine: str = "fast"
+    model: Model,
+    robots: tuple[int, int],
+    window: tuple[int, int],
+    max_states: int,
+    engine: str = "fast",
+    bound: tuple[int, int] | None = None,
 ) -> None:
     """Reject bounds no search can meet, naming the value."""
-    if engine == "fast" and max(window) > 128:
+    bound = window if bound is None else bound
+    if engine in ("fast", "compiled") and max(bound) > 128:
         raise InvalidInput(
-            f"window={window[0]}x{window[1]}: the fast engine packs offsets in 8 bits; expected at most 128x128 "
+            f"bound={bound[0]}x{bound[1]}: the fast engine packs offsets in 8 bits; expected at most 128x128 "
             "or --engine scalar"
         )
     if max_states < 1:
@@ -91,13 +108,20 @@ def validate_bounds(
     w, h = window
     if w < 1 or h < 1:
         raise InvalidInput(f"window={w}x{h}: expected a positive width and height")
+    if bound[0] < w or bound[1] < h:
+        raise InvalidInput(
+            f"bound={bound[0]}x{bound[1]}: expected at least the window {w}x{h} (the bound limits exploration, "
+            "the window the initial configurations)"
+        )
     system = system_for(model)
     for n in range(robots[0], robots[1] + 1):
         try:
-            system.codec(n, window)
+            system.codec(n, bound)
         except ValueError:
+            what = "window" if bound == window else "bound"
+            bw, bh = bound
             raise InvalidInput(
-                f"window={w}x{h} with robots={n}: a state does not pack into 63 bits; expected a smaller window "
+                f"{what}={bw}x{bh} with robots={n}: a state does not pack into 63 bits; expected a smaller {what} "
                 "or fewer robots"
             ) from None
 
@@ -128,13 +152,12 @@ def check(
     robots: tuple[int, int] | None = None,
     window: tuple[int, int] | None = None,
     *,
-    max_states: int | None = None,
-    engine: str = "fast",
-    after_violation: str = "stop",
     progress: ProgressFn | None = None,
+    **settings: Any,
 ) -> CheckResult:
-    """Check every lemma for every robot count in ``robots`` (bounds default to the model's)."""
-    plan = CheckPlan.of(model, robots, window, max_states, engine, after_violation)
+    """Check every lemma for every robot count in ``robots`` (bounds default to the model's; ``settings``
+    as :meth:`CheckPlan.of`)."""
+    plan = CheckPlan.of(model, robots, window, **settings)
     return plan.result(list(plan.searches(progress)))
 
 
@@ -149,6 +172,15 @@ class CheckPlan:
     max_states: int
     engine: str
     after_violation: str
+    bound: tuple[int, int] | None = None
+    """The exploration bound; ``None``: the window."""
+    max_memory: int = 0
+    """Bytes the search's arrays may hold (0: no limit)."""
+    capped: bool = True
+    """``max_states`` was given (on the command line or in the model), not derived from ``max_memory``."""
+    workers: int = 1
+    cluster: str | None = None
+    checkpoint: Path | None = None
 
     @classmethod
     def of(
@@ -157,52 +189,95 @@ class CheckPlan:
         robots: tuple[int, int] | None = None,
         window: tuple[int, int] | None = None,
         max_states: int | None = None,
-        engine: str = "fast",
+        engine: str | None = None,
         after_violation: str = "stop",
+        *,
+        bound: tuple[int, int] | None = None,
+        max_memory: int | None = None,
+        workers: int = 1,
+        cluster: str | None = None,
+        checkpoint: Path | None = None,
     ) -> CheckPlan:
-        """Fill the model's default bounds and reject what no search can meet, before any work."""
+        """Fill the model's default bounds and reject what no search can meet, before any work.
+        ``max_memory`` defaults to a share of the machine, ``max_states`` to the model's or else to what
+        ``max_memory`` affords, ``engine`` to the system's fastest."""
         robots = model.bounds.robots if robots is None else robots
         window = model.bounds.window if window is None else window
-        max_states = model.bounds.max_states if max_states is None else max_states
+        if bound == window:
+            bound = None
+        max_memory = default_max_memory() if max_memory is None else max_memory
+        if max_states is None:
+            max_states = model.bounds.max_states
+        capped = max_states is not None
+        max_states = states_for(max_memory) if max_states is None else max_states
+        engine = system_for(model).default_engine if engine is None else engine
         if engine not in ENGINES:
             raise unknown_engine(engine)
-        validate_bounds(model, robots, window, max_states, engine)
+        if workers < 1:
+            raise InvalidInput(f"workers={workers}: expected a positive number of worker processes")
+        if workers > 1 or cluster is not None:
+            require_dask(f"workers={workers}" if cluster is None else f"cluster={cluster!r}")
+        validate_bounds(model, robots, window, max_states, engine, bound)
         validate_resources(model, robots, window)
-        return cls(model, robots, window, max_states, engine, after_violation)
+        return cls(
+            model, robots, window, max_states, engine, after_violation, bound, max_memory, capped, workers, cluster,
+            checkpoint,
+        )  # fmt: skip
 
     @property
     def counts(self) -> range:
         return range(self.robots[0], self.robots[1] + 1)
 
     def searches(self, progress: ProgressFn | None = None) -> Iterator[tuple[SearchStats, list[LemmaResult]]]:
-        """One finished search per robot count, smallest first."""
-        for n in self.counts:
-            yield check_robots(self.model, n, self.window, self.max_states, self.engine, self.after_violation, progress)
+        """One finished search per robot count, smallest first (on one Dask cluster for all of them)."""
+        if self.workers == 1 and self.cluster is None:
+            for n in self.counts:
+                yield check_robots(self, n, None, progress)
+            return
+        with Cluster(self.workers, self.cluster) as cluster:
+            for n in self.counts:
+                yield check_robots(self, n, cluster, progress)
 
     def result(self, done: list[tuple[SearchStats, list[LemmaResult]]]) -> CheckResult:
         """The result of the searches in ``done`` (all of them, or those finished before an interrupt)."""
         stats = tuple(s for s, _ in done)
         results = tuple(r for _, rs in done for r in rs)
         complete = len(done) == len(self.counts)
-        return CheckResult(self.model, self.window, self.max_states, self.after_violation, stats, results, complete)
+        return CheckResult(
+            self.model,
+            self.window,
+            self.max_states,
+            self.after_violation,
+            stats,
+            results,
+            complete,
+            self.bound,
+            self.max_memory,
+            self.capped,
+        )
+
+
+def initial_keys_for(system: Any, n: int, window: tuple[int, int], codec: Any) -> np.ndarray:
+    """The sorted keys (in ``codec``) of every initial configuration of ``n`` robots in ``window``."""
+    model = system.model
+    if system.fields == 2 and isinstance(codec, KeyCodec):
+        return initial_keys(n, window, model, codec)
+    states = initial_array(n, window, model)
+    return np.sort(codec.encode(system.initial(states))) if len(states) else np.zeros(0, dtype=codec.dtype)
 
 
 def check_robots(
-    model: Model,
-    n: int,
-    window: tuple[int, int],
-    max_states: int,
-    engine_name: str = "fast",
-    after_violation: str = "stop",
-    progress: ProgressFn | None = None,
+    plan: CheckPlan, n: int, cluster: Cluster | None = None, progress: ProgressFn | None = None
 ) -> tuple[SearchStats, list[LemmaResult]]:
-    """Explore every execution of ``n`` robots and give every lemma its verdict."""
+    """Explore every execution of ``n`` robots under ``plan`` and give every lemma its verdict."""
     t0 = time.perf_counter()
+    model, window = plan.model, plan.window
+    bound = plan.bound or window
     system = system_for(model)
-    engine = system.engine(engine_name)
+    codec = system.codec(n, bound)
     if progress:
         progress(f"n={n}: enumerating initial configurations in {window[0]}x{window[1]}", 0, 0, "")
-    initial = initial_array(n, window, model)
+    initial = initial_keys_for(system, n, window, codec)
     if progress:
         progress(f"n={n}: {len(initial):,} initial configurations", len(initial), len(initial), "")
     if not len(initial):
@@ -213,24 +288,34 @@ def check_robots(
     tick = None
     if progress is not None:
         report = progress
+        started = time.perf_counter()
 
         def tick(level: int, done: int, frontier: int, states: int) -> None:
-            report(f"n={n}: level {level}", done, frontier, f"{states:,} states")
+            rate = states / max(time.perf_counter() - started, 1e-9)
+            report(f"n={n}: level {level}", done, frontier, f"{states:,} states, {rate:,.0f} states/s")
 
-    ex = explore(
+    pool = None if cluster is None else cluster.shards(system, n, bound, plan.engine, plan.after_violation)
+    ex = explore_keys(
         system,
-        system.initial(initial),
-        window,
-        engine,
-        max_states=max_states,
-        after_violation=after_violation,
+        n,
+        initial,
+        bound,
+        plan.engine,
+        max_states=plan.max_states if plan.capped else None,  # else the memory budget is the limit
+        max_bytes=plan.max_memory or None,
+        after_violation=plan.after_violation,
         progress=tick,
+        pool=pool,
+        checkpoint=None if plan.checkpoint is None else plan.checkpoint / f"n{n}",
+        initial_window=window,
     )
+    if pool is not None:
+        pool.close()
     results = lemma_verdicts(ex)
     stats = SearchStats(
         n,
         window,
-        engine.name,
+        plan.engine,
         ex.n_initial,
         ex.n_states,
         ex.n_transitions,
@@ -239,17 +324,30 @@ def check_robots(
         ex.off_lattice,
         ex.truncated,
         time.perf_counter() - t0,
+        plan.bound,
+        ex.nbytes,
     )
     return stats, results
 
 
 def _result(ex: Exploration, lemma: Lemma, verdict: Verdict, reason: str = "", doc: Any = None) -> LemmaResult:
     rounds = len(doc["rounds"]) if doc else None
-    return LemmaResult(lemma, verdict, ex.n, ex.window, reason, rounds, doc)
+    return LemmaResult(lemma, verdict, ex.n, ex.start_window, reason, rounds, doc)
 
 
 def _bounded(ex: Exploration, lemma: Lemma, liveness: bool) -> LemmaResult:
     """No violation found: HOLDS_WITHIN_BOUNDS, unless a bound cut the search short."""
+    if ex.limit is Limit.MAX_MEMORY:
+        return _result(
+            ex,
+            lemma,
+            Verdict.INCONCLUSIVE,
+            StopReason.MAX_MEMORY.describe(
+                f"{ex.n_states:,} states found, {ex.n_states - int(ex.expanded.sum()):,} of them unexplored; the next "
+                f"level needs about {format_size(ex.needed_bytes)}; rerun with --max-memory "
+                f"{format_size(2 * ex.needed_bytes)} or more"
+            ),
+        )
     if ex.truncated:
         return _result(
             ex,
@@ -265,7 +363,9 @@ def _bounded(ex: Exploration, lemma: Lemma, liveness: bool) -> LemmaResult:
         return _result(ex, lemma, Verdict.INCONCLUSIVE, StopReason.WINDOW.describe(f"{ex.escaped} transitions{off}"))
     w, h = ex.window
     off = f"; {ex.off_lattice} transitions off the lattice not followed" if ex.off_lattice else ""
-    return _result(ex, lemma, Verdict.HOLDS_WITHIN_BOUNDS, f"{ex.n} robots, window {w}x{h}, {ex.n_states} states{off}")
+    iw, ih = ex.start_window
+    where = f"window {w}x{h}" if ex.initial_window is None else f"window {iw}x{ih}, bound {w}x{h}"
+    return _result(ex, lemma, Verdict.HOLDS_WITHIN_BOUNDS, f"{ex.n} robots, {where}, {ex.n_states} states{off}")
 
 
 def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
@@ -303,9 +403,9 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
 
 def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
     """Lemma 5: a terminal state with a robot left of the RMA, or a fair cycle where one never moves right."""
-    xs = ex.system.array_positions(ex.states)[:, :, 0]
-    off_rma = xs.min(axis=1) < xs.max(axis=1)
-    stuck = np.nonzero(terminal & off_rma)[0]
+    candidates = np.nonzero(terminal)[0]  # only terminal states are decoded
+    xs = ex.system.array_positions(ex.state_array(candidates))[:, :, 0]
+    stuck = candidates[xs.min(axis=1) < xs.max(axis=1)]
     if len(stuck):
         doc = state_witness(ex, int(stuck[0]), Lemma.APPROACH)
         return _result(ex, Lemma.APPROACH, Verdict.VIOLATED, "no robot can move and some are left of the RMA", doc)
@@ -360,7 +460,8 @@ def check_to_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dic
         "complete": result.complete,
         "model": model_to_mapping(result.model),
         "window": list(result.window),
-        "max_states": result.max_states,
+        **({"bound": list(result.bound)} if result.bound is not None else {}),
+        "max_states": result.max_states if result.capped else None,
         "after_violation": result.after_violation,
         "searches": [
             {
@@ -373,6 +474,7 @@ def check_to_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dic
                 "off_lattice": s.off_lattice,
                 "truncated": s.truncated,
                 "seconds": round(s.seconds, 3),
+                "bytes": s.nbytes,
                 "engine": s.engine,
             }
             for s in result.stats

@@ -69,7 +69,8 @@ class Bounds:
 
     robots: tuple[int, int] = (3, 3)
     window: tuple[int, int] = (7, 7)
-    max_states: int = 1_000_000
+    max_states: int | None = None
+    """A cap on states per search; ``None``: what ``--max-memory`` affords."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -172,8 +173,8 @@ def parse_robots(text: object, *, error: type[Exception] = InvalidModel) -> tupl
     return lo, hi
 
 
-def parse_window(text: object, *, error: type[Exception] = InvalidModel) -> tuple[int, int]:
-    """``"9x9"`` to (width, height) in lattice points."""
+def parse_window(text: object, *, error: type[Exception] = InvalidModel, name: str = "window") -> tuple[int, int]:
+    """``"9x9"`` to (width, height) in lattice points (``name``: the flag, for the error)."""
     raw = str(text).strip().lower()
     parts = raw.split("x")
     try:
@@ -181,7 +182,7 @@ def parse_window(text: object, *, error: type[Exception] = InvalidModel) -> tupl
     except ValueError:
         w, h = 0, 0
     if w < 1 or h < 1:
-        raise error(f"window={raw!r}: expected WIDTHxHEIGHT in lattice points, like 9x9")
+        raise error(f"{name}={raw!r}: expected WIDTHxHEIGHT in lattice points, like 9x9")
     return w, h
 
 

@@ -113,6 +113,7 @@ class StopReason(StrEnum):
 
     WINDOW = "window"
     MAX_STATES = "max-states"
+    MAX_MEMORY = "max-memory"
     CYCLE_NOT_DECISIVE = "cycle-not-decisive"
 
     def describe(self, detail: str = "") -> str:
@@ -120,6 +121,7 @@ class StopReason(StrEnum):
         text = {
             StopReason.WINDOW: "executions leave the window (bounding box outgrew the bound)",
             StopReason.MAX_STATES: "the state bound was reached before the search finished",
+            StopReason.MAX_MEMORY: "the memory bound (--max-memory) was reached before the search finished",
             StopReason.CYCLE_NOT_DECISIVE: "a fair cycle was found on which every robot off the RMA still moves right",
         }[self]
         return f"{text}{': ' + detail if detail else ''}"

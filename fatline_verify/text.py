@@ -349,16 +349,20 @@ def table(headers: list[str], rows: list[list[str]]) -> list[str]:
 
 def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[str]:
     """The summary of a :class:`fatline_verify.checker.CheckResult`."""
+    from .resources import format_size
     from .systems import system_for
 
     model = result.model
     system = system_for(model)
     word = system.step_word
     w, h = result.window
-    lines = [
-        f"model {model.describe()}",
-        f"window {w}x{h} lattice points, at most {result.max_states} states per robot count",
-    ]
+    where = f"window {w}x{h} lattice points"
+    if result.bound is not None:
+        where += f", exploration bound {result.bound[0]}x{result.bound[1]}"
+    cap = f"at most {result.max_states:,} states per robot count"
+    if not result.capped:
+        cap += f" (what --max-memory {format_size(result.max_memory)} affords)"
+    lines = [f"model {model.describe()}", f"{where}, {cap}"]
     lines.append("")
     fine = system.scale > 1 or any(s.off_lattice for s in result.stats)
     rows = []
@@ -414,11 +418,12 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
         if fine
         else ""
     )
+    outside, scope = ("window", "window") if result.bound is None else ("exploration bound", "window and bound")
     lines += [
-        "Columns: initial = initial configurations up to translation; escaped = successors outside the window "
+        f"Columns: initial = initial configurations up to translation; escaped = successors outside the {outside} "
         f"(not explored);{off} violating-only = states reached only through a violating {word}; witness = {word}s "
         "in the shortest witness (replayed before it is reported).",
-        "A lemma that holds, holds for these robot counts and this window only. "
+        f"A lemma that holds, holds for these robot counts and this {scope} only. "
         + {
             "VIOLATED": "Exit code 1: violations were found.",
             "INCONCLUSIVE": "Exit code 3: nothing violated, but a bound was hit (INCONCLUSIVE).",

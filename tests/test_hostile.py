@@ -55,7 +55,7 @@ CASES = [
     ("check-robots-junk", ["check", "--robots", "2..x"], "robots='2..x'"),
     ("check-robots-huge-window", ["check", "--robots", "9", "--window", "128x128"], "63 bits"),
     ("check-window-tiny", ["check", "--robots", "2", "--window", "1x1"], "window=1x1: no two robots fit"),
-    ("check-engine", ["check", "--engine", "gpu"], "engine='gpu': expected one of fast, scalar"),
+    ("check-engine", ["check", "--engine", "gpu"], "engine='gpu': expected one of compiled, fast, scalar"),
     ("check-flag-value-missing", ["check", "--robots"], "robots: no value given"),
     ("check-unknown-flag", ["check", "--frobnicate"], "argument='--frobnicate': unknown"),
     # check: wrong kind of path, clobber, unwritable

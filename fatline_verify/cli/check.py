@@ -4,12 +4,15 @@ from __future__ import annotations
 
 import argparse
 from dataclasses import replace
+from pathlib import Path
 from typing import Any
 
 from ..config import Model, Parameters, parse_robots, parse_window
 from ..errors import InvalidInput
 from ..outputs import Kind, claim_dir, claim_file, claim_files, write_json
 from ..progress import Progress
+from ..resources import parse_size
+from ..systems.base import ENGINES
 from ..text import check_lines
 from .common import (
     EXIT_FOUND,
@@ -47,6 +50,14 @@ def stage_callback(bar: Progress) -> Any:
     return tick
 
 
+def checkpoint_dir(text: str) -> Path:
+    """``--checkpoint DIR``: a directory (created when missing), never an existing file."""
+    path = Path(text)
+    if path.exists() and not path.is_dir():
+        raise InvalidInput(f"checkpoint={text!r}: is a file; expected a directory for the search's checkpoints")
+    return path
+
+
 def cmd_check(args: argparse.Namespace) -> int:
     from ..checker import CheckPlan, check_to_json, witness_paths, write_witnesses
 
@@ -57,7 +68,22 @@ def cmd_check(args: argparse.Namespace) -> int:
         model = with_q(model, args.q)
     traces_dir = claim_dir(args.traces, name="traces")
     json_path = claim_file(args.json, name="json", kind=Kind.CHECK, force=args.force) if args.json else None
-    plan = CheckPlan.of(model, robots, window, args.max_states, args.engine, args.after_violation)
+    bound = parse_window(args.bound, error=InvalidInput, name="bound") if args.bound is not None else None
+    max_memory = parse_size(args.max_memory) if args.max_memory is not None else None
+    checkpoint = checkpoint_dir(args.checkpoint) if args.checkpoint is not None else None
+    plan = CheckPlan.of(
+        model,
+        robots,
+        window,
+        args.max_states,
+        args.engine,
+        args.after_violation,
+        bound=bound,
+        max_memory=max_memory,
+        workers=args.workers,
+        cluster=args.cluster,
+        checkpoint=checkpoint,
+    )
     claim_files(witness_paths(plan, traces_dir, f"{model.name}-"), name="traces", kind=Kind.TRACE, force=args.force)
 
     done = []
@@ -96,7 +122,33 @@ def register(sub: Any) -> None:
         type=integer("max-states", 1, MAX_STATES_LIMIT),
         help="stop a search after this many states (default: the model's)",
     )
-    p.add_argument("--engine", choices=["fast", "scalar"], default="fast", help="exploration engine (default fast)")
+    p.add_argument(
+        "--bound",
+        help="WIDTHxHEIGHT lattice points that bound the exploration (default: the window); successors outside "
+        "are counted as escaped",
+    )
+    p.add_argument(
+        "--max-memory",
+        help="memory the search's arrays may use, e.g. 4G (default: half of this machine's); the search stops "
+        "cleanly before a level that would need more",
+    )
+    p.add_argument(
+        "--engine",
+        choices=list(ENGINES),
+        default=None,
+        help="exploration engine (default: compiled for the round schedulers, fast for async)",
+    )
+    p.add_argument(
+        "--workers",
+        type=integer("workers", 1, 1024),
+        default=1,
+        help="share the search among N worker processes on this machine (Dask; default 1: in this process)",
+    )
+    p.add_argument("--cluster", help="share the search among the workers of the Dask scheduler at tcp://HOST:PORT")
+    p.add_argument(
+        "--checkpoint",
+        help="save the search to DIR after every level; the same command resumes from it",
+    )
     p.add_argument(
         "--after-violation",
         choices=["stop", "continue"],

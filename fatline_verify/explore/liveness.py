@@ -49,7 +49,7 @@ def _trim(src: np.ndarray, dst: np.ndarray, n_nodes: int) -> np.ndarray:
 def _permutation(ex: Exploration, state_id: int, code: int) -> tuple[int, ...]:
     """For the step ``code`` from ``state_id``: ``perm[k]`` = the source index now at canonical index k."""
     system = ex.system
-    state = system.from_array(ex.states[state_id])
+    state = system.from_array(ex.state_array(state_id))
     target = system.play(state, system.action(code, range(ex.n), state)).target
     _, order = system.canonical(system.to_array(target)[None])
     return tuple(int(i) for i in order[0])

@@ -27,11 +27,11 @@ class EngineDisagreement(FatlineError):
 
 def _follow(ex: Exploration, start_id: int, steps: list[tuple[int, int]]) -> tuple[Any, list[Any]]:
     system = ex.system
-    state = system.from_array(ex.states[ex.root(start_id)])
+    state = system.from_array(ex.state_array(ex.root(start_id)))
     initial, played = system.positions(state), []
     for sid, code in steps:
         canon, order = system.canonical(system.to_array(state)[None])
-        if not np.array_equal(canon[0], ex.states[sid]):
+        if not np.array_equal(canon[0], ex.state_array(sid)):
             raise EngineDisagreement(f"witness step from state {sid}: {state} is not that state")
         step = system.play(state, system.action(code, order[0], state))
         played.append(step)
@@ -45,8 +45,10 @@ def _finish(ex: Exploration, run: Run, lemma: Lemma) -> dict[str, Any]:
         "lemma": lemma.value,
         "engine": ex.engine,
         "robots": ex.n,
-        "window": list(ex.window),
+        "window": list(ex.start_window),
     }
+    if ex.initial_window is not None:
+        origin["bound"] = list(ex.window)
     doc = replayed_document(run, origin, lemma)
     if doc["violation"] is None or doc["violation"]["property"] != lemma:
         raise EngineDisagreement(f"{lemma} witness: the executable model does not show the violation")

@@ -247,9 +247,9 @@ def model_markdown(report: ModelReport) -> str:
         "",
         "## Bounded model checker",
         "",
-        f"Robots {b.robots[0]}..{b.robots[1]}, window {b.window[0]}x{b.window[1]} lattice points, "
-        f"at most {b.max_states} states. States reached only through a violating {_word(report)} are not explored "
-        "further.",
+        f"Robots {b.robots[0]}..{b.robots[1]}, window {b.window[0]}x{b.window[1]} lattice points"
+        f"{'' if b.max_states is None else f', at most {b.max_states} states'}. States reached only through a "
+        f"violating {_word(report)} are not explored further.",
         "",
     ]
     lines += [*_md_table(_search_head(report), _search_rows(report)), ""]

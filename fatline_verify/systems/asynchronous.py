@@ -391,6 +391,9 @@ class AsyncSystem:
         pos, _ = current_positions(states, self.K)
         return pos
 
+    default_engine = "fast"
+    """The engine ``check`` uses unless told otherwise (there is no compiled one for events yet)."""
+
     def engine(self, name: str) -> Engine:
         def fast() -> Engine:
             from ..explore.fast_async import FastAsyncEngine

@@ -124,8 +124,33 @@ class Expansion:
     """(t,) bool: the successor lies on the lattice (else ``after`` is meaningless and it is not explored)."""
 
 
+@dataclass(slots=True)
+class KeyExpansion:
+    """What the search needs of a batch of frontier keys: :class:`Expansion` with each successor
+    replaced by its canonical key (in the search's codec) and whether it fits the exploration bound."""
+
+    enabled: np.ndarray
+    """(m,) int64 bitmask, per frontier key."""
+    goal: np.ndarray
+    """(m,) bool."""
+    src: np.ndarray
+    """(t,) int64 row of the source key in the batch."""
+    action: np.ndarray
+    """(t,) int64 action code."""
+    key: np.ndarray
+    """(t,) the successor's canonical key (zero where it does not fit)."""
+    flags: np.ndarray
+    """(t,) int64 violation bits."""
+    fits: np.ndarray
+    """(t,) bool: the successor is on the lattice and inside the bound."""
+    exact: np.ndarray
+    """(t,) bool: the successor is on the system's lattice."""
+
+
 class Engine(Protocol):
-    """An exploration engine for one transition system."""
+    """An exploration engine for one transition system. An engine may also offer
+    ``expand_keys(keys, codec) -> KeyExpansion`` doing the whole step from keys to keys (a compiled
+    kernel does); :func:`expand_keys` uses it when present."""
 
     name: str
 
@@ -248,6 +273,9 @@ class TransitionSystem(Protocol):
         """The key codec for ``n`` robots whose base-lattice bounding box is at most ``window``."""
         ...
 
+    default_engine: str
+    """The engine name ``check`` uses unless told otherwise (one of :data:`ENGINES`)."""
+
     def engine(self, name: str) -> Engine:
         """The named engine (``scalar``: the executable model; ``fast``: vectorised)."""
         ...
@@ -261,24 +289,51 @@ class TransitionSystem(Protocol):
     """How many array units make one base lattice unit."""
 
 
-ENGINES = ("fast", "scalar")
+ENGINES = ("compiled", "fast", "scalar")
 """The engine names every system answers to (:func:`pick_engine`)."""
 
 
 def unknown_engine(name: str) -> InvalidInput:
     """The one-line error for an engine name not in :data:`ENGINES`."""
-    return InvalidInput(f"engine={name!r}: expected scalar or fast")
+    return InvalidInput(f"engine={name!r}: expected compiled, fast or scalar")
 
 
-def pick_engine(system: TransitionSystem, name: str, fast: Callable[[], Engine]) -> Engine:
+def expand_keys(system: TransitionSystem, engine: Engine, codec: Codec, keys: np.ndarray) -> KeyExpansion:
+    """One search step from frontier keys: the engine's own ``expand_keys`` when it has one, else
+    decode, :meth:`Engine.expand`, canonicalise and encode."""
+    own = getattr(engine, "expand_keys", None)
+    if own is not None:
+        return own(keys, codec)  # type: ignore[no-any-return]
+    ex = engine.expand(codec.decode(keys))
+    canon, _ = system.canonical(ex.after) if len(ex.after) else (ex.after, None)
+    fits = (codec.fits(canon) & ex.exact) if len(canon) else np.zeros(0, dtype=bool)
+    key = np.zeros(len(canon), dtype=codec.dtype)
+    if fits.any():
+        key[fits] = codec.encode(canon[fits])
+    return KeyExpansion(ex.enabled, ex.goal, ex.src, ex.action, key, ex.flags, fits, ex.exact)
+
+
+def pick_engine(
+    system: TransitionSystem,
+    name: str,
+    fast: Callable[[], Engine],
+    compiled: Callable[[], Engine] | None = None,
+) -> Engine:
     """A system's :meth:`TransitionSystem.engine`: the shared reference engine for ``scalar``, the
-    system's own vectorised one (``fast()``) for ``fast``."""
+    system's own vectorised one (``fast()``) for ``fast``, its compiled one for ``compiled`` (a system
+    without one refuses the name)."""
     if name == "scalar":
         from ..explore.scalar import ScalarEngine
 
         return ScalarEngine(system)
     if name == "fast":
         return fast()
+    if name == "compiled":
+        if compiled is None:
+            raise InvalidInput(
+                f"engine='compiled': scheduler={system.kind.value} has no compiled engine; expected fast or scalar"
+            )
+        return compiled()
     raise unknown_engine(name)
 
 
@@ -287,9 +342,11 @@ __all__ = [
     "Codec",
     "Engine",
     "Expansion",
+    "KeyExpansion",
     "Marks",
     "Step",
     "TransitionSystem",
+    "expand_keys",
     "pick_engine",
     "unknown_engine",
 ]

@@ -186,13 +186,21 @@ class RoundSystem:
     def array_positions(self, states: np.ndarray) -> np.ndarray:
         return states
 
+    default_engine = "compiled"
+    """The engine ``check`` uses unless told otherwise."""
+
     def engine(self, name: str) -> Engine:
         def fast() -> Engine:
             from ..explore.fast import FastEngine
 
             return FastEngine(self)
 
-        return pick_engine(self, name, fast)
+        def compiled() -> Engine:
+            from ..explore.compiled import CompiledEngine
+
+            return CompiledEngine(self)
+
+        return pick_engine(self, name, fast, compiled)
 
 
 __all__ = ["MAX_SCHEDULE_STEPS", "RoundSystem"]

@@ -1,0 +1,118 @@
+"""Scale benchmark: `fatline check` end to end next to SPIN on the same state space.
+
+For each robot count, one `fatline check` process on the SPIN anchor's reading
+(`../shared/anchors/spin/spin-reading.toml`), initial configurations in the 9x9 window, explored within
+a bound nothing escapes from (20x20, checked: escaped = 0), every lemma judged and every witness
+replayed. Prints initial configurations, states, transitions, seconds, states/s, bytes a state (the
+search's arrays / states) and the process's peak memory; and, when `spin` and `gcc` are on the PATH,
+SPIN's whole pipeline (generate, spin -a, gcc, pan) on the same state space, measured in the same run.
+`--workers 2` adds a column with the search shared by two Dask workers and the speed-up.
+
+    python bench/scale.py                  # n = 4, 5, 6
+    python bench/scale.py --robots 7       # n = 4..7 (n = 7 takes minutes)
+    python bench/scale.py --workers 2      # also with two worker processes
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+ANCHOR = ROOT.parent / "shared" / "anchors" / "spin"
+BOUND = "20x20"
+
+
+def run_measured(cmd: list[str], cwd: Path, env: dict[str, str] | None = None) -> tuple[float, float, str]:
+    """Wall seconds, peak RSS in MB (of the process tree, via /usr/bin/time when present) and stdout."""
+    timer = shutil.which("time") or ("/usr/bin/time" if Path("/usr/bin/time").exists() else None)
+    stats = cwd / "time.out"
+    full = [timer, "-f", "%e %M", "-o", str(stats), *cmd] if timer else cmd
+    t0 = time.perf_counter()
+    out = subprocess.run(full, cwd=cwd, capture_output=True, text=True, env=env)
+    wall = time.perf_counter() - t0
+    peak = float(stats.read_text().split()[-1]) / 1024 if timer and stats.exists() else float("nan")
+    if out.returncode not in (0, 1, 3):
+        sys.exit(f"{cmd[0]} failed ({out.returncode}): {out.stderr.strip()[-400:]}")
+    return wall, peak, out.stdout
+
+
+def fatline(n: int, workdir: Path, workers: int) -> dict[str, float]:
+    out = workdir / f"n{n}-w{workers}.json"
+    cmd = [sys.executable, "-m", "fatline_verify.cli", "check", str(ANCHOR / "spin-reading.toml"), "--robots", str(n)]
+    cmd += ["--window", "9x9", "--bound", BOUND, "--max-states", "200000000", "--workers", str(workers)]
+    cmd += ["--json", str(out), "--traces", str(workdir / "traces"), "--force", "-q"]
+    wall, peak, _ = run_measured(cmd, workdir)
+    search = json.loads(out.read_text())["searches"][0]
+    assert search["escaped"] == 0, f"n={n}: {search['escaped']} successors escape {BOUND}; raise BOUND"
+    return {
+        "initial": search["initial"],
+        "states": search["states"],
+        "transitions": search["transitions"],
+        "seconds": wall,
+        "peak_mb": peak,
+        "bytes_per_state": search.get("bytes", 0) / max(1, search["states"]),
+    }
+
+
+def spin(n: int, workdir: Path) -> dict[str, float] | None:
+    """SPIN's whole pipeline for n robots (None when spin or gcc is missing)."""
+    if not (shutil.which("spin") and shutil.which("gcc")) or not ANCHOR.exists():
+        return None
+    env = dict(os.environ, W="9", REPS="1", WORK=str(workdir / "spin"))
+    if n >= 6:
+        env["PANFLAGS"] = "-c0 -m10000 -w24"
+    wall, _, out = run_measured(["bash", str(ANCHOR / "run_spin.sh"), str(n)], workdir, env)
+    row = next(line.split() for line in out.splitlines() if re.match(r"^dfs\s+\d", line))
+    states = int(row[3]) - 1  # SPIN's "states stored" counts its start state
+    return {"states": states, "seconds": wall, "pan_seconds": float(row[10]), "peak_mb": float(row[12])}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--robots", type=int, default=6, help="largest robot count (default 6)")
+    parser.add_argument("--workers", type=int, default=1, help="also measure with this many Dask workers")
+    args = parser.parse_args()
+    sys.path.insert(0, str(ROOT))
+    from fatline_verify.text import table
+
+    heads = ["n", "initial", "states", "transitions", "fatline s", "states/s", "bytes/state", "peak MB"]
+    heads += ["SPIN s (pan s)", "SPIN peak MB", "SPIN / fatline"]
+    if args.workers > 1:
+        heads += [f"{args.workers} workers s", "speed-up"]
+    rows = []
+    with tempfile.TemporaryDirectory(prefix="fatline-bench-") as tmp:
+        work = Path(tmp)
+        fatline(3, work, 1)  # warm the compiled kernels' cache
+        for n in range(4, args.robots + 1):
+            ours = fatline(n, work, 1)
+            theirs = spin(n, work)
+            row = [str(n), f"{ours['initial']:,}", f"{ours['states']:,}", f"{ours['transitions']:,}"]
+            row += [f"{ours['seconds']:.2f}", f"{ours['states'] / ours['seconds']:,.0f}"]
+            row += [f"{ours['bytes_per_state']:.0f}", f"{ours['peak_mb']:.0f}"]
+            if theirs:
+                same = "" if theirs["states"] == ours["states"] else f" (SPIN: {theirs['states']:,} states!)"
+                row += [f"{theirs['seconds']:.2f} ({theirs['pan_seconds']:.2f}){same}", f"{theirs['peak_mb']:.0f}"]
+                row += [f"{theirs['seconds'] / ours['seconds']:.2f}x"]
+            else:
+                row += ["(spin not installed)", "-", "-"]
+            if args.workers > 1:
+                par = fatline(n, work, args.workers)
+                assert par["states"] == ours["states"]
+                row += [f"{par['seconds']:.2f}", f"{ours['seconds'] / par['seconds']:.2f}x"]
+            rows.append(row)
+            print(table(heads, rows)[-1], flush=True)
+    print()
+    print("\n".join(table(heads, rows)))
+
+
+if __name__ == "__main__":
+    main()

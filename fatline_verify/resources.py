@@ -1,0 +1,74 @@
+"""Memory: the machine's, the share a search may use (``--max-memory``), and sizes as text.
+
+A search holds packed keys and compact columns (:class:`fatline_verify.explore.search.Exploration`);
+it stops cleanly before a level that would take its arrays past the budget, and ``--max-states``
+defaults to what the budget affords at :data:`BYTES_PER_STATE`.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+
+from .errors import InvalidInput
+
+BYTES_PER_STATE = 128
+"""A generous estimate of a search's bytes per state, transitions included (measured: about 60 at
+n = 5 and 85 at n = 6 on the 9x9 lattice; a level's temporaries come on top)."""
+
+DEFAULT_SHARE = 0.5
+"""The share of the machine's memory a search may use unless ``--max-memory`` says otherwise."""
+
+_UNITS = {"": 1, "K": 2**10, "M": 2**20, "G": 2**30, "T": 2**40}
+
+
+def machine_memory() -> int:
+    """Physical memory in bytes (Linux and other POSIX systems; 8 GiB where it cannot be read)."""
+    try:
+        return int(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+    except (ValueError, OSError, AttributeError):
+        return 8 * 2**30
+
+
+def default_max_memory() -> int:
+    return int(machine_memory() * DEFAULT_SHARE)
+
+
+def parse_size(text: str, name: str = "max-memory") -> int:
+    """``"512M"``, ``"1.5G"``, ``"2000000"`` (bytes) -> bytes; a one-line error otherwise."""
+    m = re.fullmatch(r"\s*(\d+(?:\.\d+)?)\s*([KMGT]?)(?:i?B)?\s*", text, flags=re.IGNORECASE)
+    if not m:
+        raise InvalidInput(f"{name}={text!r}: expected a size such as 512M, 4G or 1.5G")
+    size = int(float(m.group(1)) * _UNITS[m.group(2).upper()])
+    if size < 2**20:
+        raise InvalidInput(f"{name}={text!r}: expected at least 1M")
+    total = machine_memory()
+    if size > total:
+        raise InvalidInput(f"{name}={text!r}: expected at most this machine's memory, {format_size(total)}")
+    return size
+
+
+def format_size(size: int) -> str:
+    """Bytes as a short size with a binary unit (``1.5G``, ``512M``)."""
+    for unit in ("T", "G", "M", "K"):
+        if size >= _UNITS[unit]:
+            value = size / _UNITS[unit]
+            return f"{value:.1f}{unit}" if value < 10 and value != int(value) else f"{round(value)}{unit}"
+    return f"{size}B"
+
+
+def states_for(max_memory: int) -> int:
+    """The default ``--max-states``: what ``max_memory`` affords."""
+    return max(1, max_memory // BYTES_PER_STATE)
+
+
+def current_rss() -> int:
+    """This process's resident memory now, in bytes (0 where it cannot be read)."""
+    try:
+        with open("/proc/self/statm") as fh:
+            return int(fh.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError):
+        return 0
+
+
+__all__ = ["BYTES_PER_STATE", "default_max_memory", "format_size", "machine_memory", "parse_size", "states_for"]
