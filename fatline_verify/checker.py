@@ -8,6 +8,7 @@ INCONCLUSIVE with the reason. The engine never prints; progress goes through a c
 
 from __future__ import annotations
 
+import re
 import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
@@ -19,6 +20,7 @@ import numpy as np
 
 from .config import Model
 from .errors import InvalidInput
+from .explore.checkpoint import claim_checkpoint
 from .explore.initial import initial_array, initial_keys
 from .explore.lattice import KeyCodec
 from .explore.liveness import fair_cycles
@@ -27,7 +29,7 @@ from .explore.witness import lasso_run, lasso_witness, state_witness, transition
 from .explore.workers import Cluster, require_dask
 from .outputs import Kind, child
 from .properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason, Verdict
-from .resources import default_max_memory, format_size, states_for
+from .resources import default_max_memory, format_size, machine_memory
 from .systems import system_for
 from .systems.base import ENGINES, unknown_engine
 from .trace import approach_stuck
@@ -68,7 +70,8 @@ class CheckResult:
 
     model: Model = field(repr=False)
     window: tuple[int, int]
-    max_states: int
+    max_states: int | None
+    """``None``: the memory budget was the only limit."""
     after_violation: str
     stats: tuple[SearchStats, ...]
     results: tuple[LemmaResult, ...]
@@ -76,8 +79,6 @@ class CheckResult:
     """False when the run was interrupted: only the robot counts in ``stats`` were searched."""
     bound: tuple[int, int] | None = None
     max_memory: int = 0
-    capped: bool = True
-    """``max_states`` was given, not derived from ``max_memory``."""
 
     @property
     def any_violated(self) -> bool:
@@ -92,7 +93,7 @@ def validate_bounds(
     model: Model,
     robots: tuple[int, int],
     window: tuple[int, int],
-    max_states: int,
+    max_states: int | None,
     engine: str = "fast",
     bound: tuple[int, int] | None = None,
 ) -> None:
@@ -103,7 +104,7 @@ def validate_bounds(
             f"bound={bound[0]}x{bound[1]}: the fast engine packs offsets in 8 bits; expected at most 128x128 "
             "or --engine scalar"
         )
-    if max_states < 1:
+    if max_states is not None and max_states < 1:
         raise InvalidInput(f"max-states={max_states}: expected a positive number of states")
     w, h = window
     if w < 1 or h < 1:
@@ -169,15 +170,14 @@ class CheckPlan:
     model: Model
     robots: tuple[int, int]
     window: tuple[int, int]
-    max_states: int
+    max_states: int | None
+    """``None``: the memory budget is the only limit."""
     engine: str
     after_violation: str
     bound: tuple[int, int] | None = None
     """The exploration bound; ``None``: the window."""
     max_memory: int = 0
     """Bytes the search's arrays may hold (0: no limit)."""
-    capped: bool = True
-    """``max_states`` was given (on the command line or in the model), not derived from ``max_memory``."""
     workers: int = 1
     cluster: str | None = None
     checkpoint: Path | None = None
@@ -208,19 +208,22 @@ class CheckPlan:
         max_memory = default_max_memory() if max_memory is None else max_memory
         if max_states is None:
             max_states = model.bounds.max_states
-        capped = max_states is not None
-        max_states = states_for(max_memory) if max_states is None else max_states
         engine = system_for(model).default_engine if engine is None else engine
         if engine not in ENGINES:
             raise unknown_engine(engine)
         if workers < 1:
             raise InvalidInput(f"workers={workers}: expected a positive number of worker processes")
+        if cluster is not None and not re.fullmatch(r"(tcp|tls|ucx)://[A-Za-z0-9_.\-\[\]:]+:\d+", cluster):
+            raise InvalidInput(f"cluster={cluster!r}: expected a Dask scheduler address like tcp://HOST:PORT")
         if workers > 1 or cluster is not None:
             require_dask(f"workers={workers}" if cluster is None else f"cluster={cluster!r}")
+        system_for(model).engine(engine)  # a system without this engine refuses it here, before any work
         validate_bounds(model, robots, window, max_states, engine, bound)
         validate_resources(model, robots, window)
+        if checkpoint is not None:
+            claim_checkpoint(checkpoint, range(robots[0], robots[1] + 1))
         return cls(
-            model, robots, window, max_states, engine, after_violation, bound, max_memory, capped, workers, cluster,
+            model, robots, window, max_states, engine, after_violation, bound, max_memory, workers, cluster,
             checkpoint,
         )  # fmt: skip
 
@@ -253,7 +256,6 @@ class CheckPlan:
             complete,
             self.bound,
             self.max_memory,
-            self.capped,
         )
 
 
@@ -301,7 +303,7 @@ def check_robots(
         initial,
         bound,
         plan.engine,
-        max_states=plan.max_states if plan.capped else None,  # else the memory budget is the limit
+        max_states=plan.max_states,  # None: the memory budget is the only limit
         max_bytes=plan.max_memory or None,
         after_violation=plan.after_violation,
         progress=tick,
@@ -344,8 +346,13 @@ def _bounded(ex: Exploration, lemma: Lemma, liveness: bool) -> LemmaResult:
             Verdict.INCONCLUSIVE,
             StopReason.MAX_MEMORY.describe(
                 f"{ex.n_states:,} states found, {ex.n_states - int(ex.expanded.sum()):,} of them unexplored; the next "
-                f"level needs about {format_size(ex.needed_bytes)}; rerun with --max-memory "
-                f"{format_size(2 * ex.needed_bytes)} or more"
+                f"level needs about {format_size(ex.needed_bytes)}; "
+                + (
+                    f"rerun with --max-memory {format_size(ex.needed_bytes)} or more (deeper levels may need more)"
+                    if ex.needed_bytes <= machine_memory()
+                    else f"more than this machine's {format_size(machine_memory())}: share it with --cluster, or a "
+                    "smaller --bound or --window"
+                )
             ),
         )
     if ex.truncated:
@@ -461,7 +468,7 @@ def check_to_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dic
         "model": model_to_mapping(result.model),
         "window": list(result.window),
         **({"bound": list(result.bound)} if result.bound is not None else {}),
-        "max_states": result.max_states if result.capped else None,
+        "max_states": result.max_states,
         "after_violation": result.after_violation,
         "searches": [
             {

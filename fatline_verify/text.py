@@ -359,9 +359,10 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
     where = f"window {w}x{h} lattice points"
     if result.bound is not None:
         where += f", exploration bound {result.bound[0]}x{result.bound[1]}"
-    cap = f"at most {result.max_states:,} states per robot count"
-    if not result.capped:
-        cap += f" (what --max-memory {format_size(result.max_memory)} affords)"
+    if result.max_states is not None:
+        cap = f"at most {result.max_states:,} states per robot count"
+    else:
+        cap = f"as many states as --max-memory {format_size(result.max_memory)} holds"
     lines = [f"model {model.describe()}", f"{where}, {cap}"]
     lines.append("")
     fine = system.scale > 1 or any(s.off_lattice for s in result.stats)

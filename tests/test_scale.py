@@ -102,6 +102,9 @@ def test_verdicts_and_witnesses_name_the_bound(tmp_path):
         (["--max-memory", "100T"], "max-memory='100T': expected at most this machine's memory"),
         (["--workers", "0"], "workers='0'"),
         (["--engine", "turbo"], "engine='turbo'"),
+        (["--cluster", "nonsense"], "cluster='nonsense': expected a Dask scheduler address"),
+        (["--cluster", "foo://bar:1"], "cluster='foo://bar:1'"),
+        (["--checkpoint", "/proc/nope/ck"], "checkpoint='/proc/nope/ck': cannot write there"),
     ],
 )
 def test_bad_scale_flags_are_one_line_errors(capsys, tmp_path, args, fragment):
@@ -130,6 +133,34 @@ def test_any_number_of_shards_gives_the_same_search(readings):
         shards = [Shard(system, 3, (8, 8), "fast", i, count) for i in range(count)]
         many = explore_keys(system, 3, init, (8, 8), "fast", pool=LocalShards(shards))
         _same(one, many)
+
+
+@pytest.mark.parametrize("motion", ["rigid", "non-rigid"])
+def test_shards_agree_on_async_byte_keys(motion):
+    """Four async robots need two-word keys; a shard with nothing to route must not break the level."""
+    model = make_model(scheduler="async", motion=motion)
+    system = system_for(model)
+    from fatline_verify.explore.initial import initial_array
+
+    codec = system.codec(4, (7, 7))
+    assert codec.dtype != np.int64
+    init = np.sort(codec.encode(system.initial(initial_array(4, (5, 5), model))))
+    one = explore_keys(system, 4, init, (7, 7), "fast", after_violation="continue")
+    shards = [Shard(system, 4, (7, 7), "fast", i, 3, "continue") for i in range(3)]
+    _same(one, explore_keys(system, 4, init, (7, 7), "fast", pool=LocalShards(shards), after_violation="continue"))
+    assert len(owners(np.zeros(0, dtype=codec.dtype), 2)) == 0
+
+
+def test_transitions_are_in_source_then_action_order_for_every_engine():
+    model = make_model(scheduler="async", motion="non-rigid")
+    system = system_for(model)
+    from fatline_verify.explore.initial import initial_array
+
+    init = system.initial(initial_array(3, (6, 6), model))
+    for engine in ("fast", "scalar"):
+        ex = explore_keys(system, 3, np.sort(system.codec(3, (8, 8)).encode(init)), (8, 8), engine)
+        order = np.lexsort((ex.edge_action, ex.edge_src))
+        assert np.array_equal(order, np.arange(ex.n_transitions)), engine
 
 
 def test_owners_spread_keys_and_are_stable():
@@ -223,6 +254,25 @@ def test_checkpoint_flag_refuses_a_file(capsys, tmp_path):
     assert f.read_text() == "keep"
 
 
+def test_checkpoint_refuses_foreign_files_before_any_work(capsys, tmp_path):
+    ck = tmp_path / "ck"
+    (ck / "n2").mkdir(parents=True)
+    (ck / "n2" / "data.csv").write_text("mine")
+    code, _, err = run_cli(capsys, "check", "--robots", "2", "--checkpoint", str(ck), "--traces", str(tmp_path), "-q")
+    assert_one_line_error(code, err, "n2/data.csv is not a checkpoint file")
+    (ck / "notes.txt").write_text("mine")
+    code, _, err = run_cli(capsys, "check", "--robots", "2", "--checkpoint", str(ck), "--traces", str(tmp_path), "-q")
+    assert_one_line_error(code, err, "holds 'notes.txt'")
+    assert (ck / "notes.txt").read_text() == "mine" and (ck / "n2" / "data.csv").read_text() == "mine"
+
+
+def test_a_checkpoint_with_a_missing_level_is_refused(tmp_path):
+    _explore(make_model(), 3, tmp_path / "ck")
+    (tmp_path / "ck" / "level-00001.npz").unlink()
+    with pytest.raises(InvalidInput, match=r"level-00001\.npz is missing"):
+        _explore(make_model(), 3, tmp_path / "ck")
+
+
 def test_checkpoint_names_the_run():
     model = make_model()
     a = Checkpoint(None, model, 3, (9, 9), np.arange(3), "stop").run
@@ -268,10 +318,19 @@ def test_the_memory_guard_stops_cleanly_and_names_the_flag():
     assert result.stats[0].truncated
 
 
-def test_the_default_max_states_comes_from_the_memory_budget():
+def test_without_max_states_the_memory_budget_is_the_only_limit():
     plan = CheckPlan.of(make_model(), (6, 6), (9, 9), max_memory=64 * 2**20)
-    assert not plan.capped and plan.max_states == 64 * 2**20 // 128
-    assert CheckPlan.of(make_model(), (6, 6), (9, 9), max_states=5).capped
+    assert plan.max_states is None and plan.max_memory == 64 * 2**20
+    assert CheckPlan.of(make_model(), (6, 6), (9, 9), max_states=5).max_states == 5
+    capped = check(make_model(), (4, 4), (9, 9), max_states=10_000)
+    held = [r for r in capped.results if r.verdict.value == "INCONCLUSIVE"]
+    assert capped.stats[0].truncated and held and all("--max-states" in r.reason for r in held)
+
+
+def test_the_first_level_is_guarded_too():
+    """The initial configurations' expansion is usually the largest level; it is estimated, not run blind."""
+    result = check(make_model(), (5, 5), (9, 9), max_memory=8 * 2**20)
+    assert result.stats[0].truncated and result.stats[0].states == result.stats[0].initial
 
 
 def test_a_search_holds_compact_columns():

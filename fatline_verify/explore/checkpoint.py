@@ -19,22 +19,25 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import re
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .. import __version__
 from ..config import Model, model_to_mapping
 from ..errors import InvalidInput
+from .shard import COLUMNS
 
 if TYPE_CHECKING:
     from .search import _Records
 
 FORMAT = "fatline-checkpoint"
-VERSION = 1
+VERSION = 2
 MANIFEST = "manifest.json"
 _LEVEL = ("keys", "parent", "paction")
-_EXPANSION = ("ids", "enabled", "goal", "src", "action", "key", "flags", "fits", "exact")
+_EXPANSION = COLUMNS
 
 
 def _atomic(path: Path, write: Any) -> None:
@@ -58,6 +61,7 @@ class Checkpoint:
     ) -> None:
         self.directory = directory
         self.run = {
+            "tool": __version__,
             "model": model_to_mapping(model),
             "robots": n,
             "bound": list(bound),
@@ -104,6 +108,12 @@ class Checkpoint:
         if doc is None or doc["levels"] < 0:
             return False
         for level in range(doc["levels"] + 1):
+            if not self._level_path(level).is_file():
+                raise InvalidInput(
+                    f"checkpoint={self.directory.as_posix()!r}: {MANIFEST} records {doc['levels'] + 1} levels but "
+                    f"{self._level_path(level).name} is missing; expected the directory as fatline check left it, or "
+                    "an empty one"
+                )
             with np.load(self._level_path(level), allow_pickle=False) as data:
                 if level:
                     rec.add_expansion_arrays(*(data[f] for f in _EXPANSION))
@@ -140,4 +150,38 @@ class Checkpoint:
         self._write_manifest(level)
 
 
-__all__ = ["FORMAT", "Checkpoint"]
+def _ours(name: str) -> bool:
+    return name == MANIFEST or re.fullmatch(r"\.?level-\d{5}\.npz(\.tmp)?", name) is not None
+
+
+def claim_checkpoint(root: Path, counts: range) -> None:
+    """Refuse, before any work, a ``--checkpoint`` directory the searches of ``counts`` cannot use: one
+    that holds anything but their ``n<robots>`` directories, a ``n<robots>`` that holds anything but
+    checkpoint files, or one that cannot be created and written."""
+    label = f"checkpoint={root.as_posix()!r}"
+    if root.exists() and not root.is_dir():
+        raise InvalidInput(f"{label}: is a file; expected a directory for the search's checkpoints")
+    if root.is_dir():
+        foreign = [p.name for p in root.iterdir() if not (p.is_dir() and re.fullmatch(r"n\d+", p.name))]
+        if foreign:
+            raise InvalidInput(f"{label}: holds {sorted(foreign)[0]!r}, not a checkpoint; expected an empty directory")
+    for n in counts:
+        sub = root / f"n{n}"
+        if sub.exists() and not sub.is_dir():
+            raise InvalidInput(f"{label}: {sub.name} is a file; expected the checkpoint directory of {n} robots")
+        if sub.is_dir():
+            foreign = [p.name for p in sub.iterdir() if not _ours(p.name)]
+            if foreign:
+                raise InvalidInput(
+                    f"{label}: {sub.name}/{sorted(foreign)[0]} is not a checkpoint file; expected an empty directory"
+                )
+        try:
+            sub.mkdir(parents=True, exist_ok=True)
+            probe = sub / ".level-00000.npz.tmp"
+            probe.write_bytes(b"")
+            probe.unlink()
+        except OSError as exc:
+            raise InvalidInput(f"{label}: cannot write there ({exc.strerror}); expected a writable directory") from None
+
+
+__all__ = ["FORMAT", "Checkpoint", "claim_checkpoint"]

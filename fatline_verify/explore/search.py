@@ -27,8 +27,9 @@ from typing import Any, Protocol
 import numpy as np
 
 from ..config import Model
+from ..resources import BYTES_PER_STATE, PEAK_FACTOR
 from ..systems.base import Codec, Engine, TransitionSystem
-from .shard import Level, Shard, owners
+from .shard import COLUMNS, Level, Shard, followed, owners
 
 ProgressTick = Callable[[int, int, int, int], None]
 """``tick(level, done, frontier, states)``."""
@@ -79,7 +80,8 @@ class Exploration:
     limit: Limit = Limit.NONE
     after_violation: str = "stop"
     needed_bytes: int = 0
-    """When stopped by ``max_bytes``: the bytes held when it stopped, plus the next level's estimate."""
+    """When stopped by ``max_bytes``: the peak the next level was projected to need (held arrays plus
+    the next level's estimate, times :data:`~fatline_verify.resources.PEAK_FACTOR`)."""
     initial_window: tuple[int, int] | None = None
     """The window the initial configurations came from, when not the bound."""
 
@@ -206,21 +208,18 @@ class _Records:
         self.paction.append(paction)
 
     def add_expansion(self, lv: Level) -> None:
-        """One level's expansion, compacted (source ids int32 while they fit; actions int32; flags uint8)."""
-        src = lv.src.astype(np.int32) if len(lv.src) and lv.src[-1] < 2**31 - 1 else lv.src
+        """One level's expansion (already compacted by the shard: int32 ids and actions, uint8 flags)."""
         self.add_expansion_arrays(
-            lv.ids, lv.enabled.astype(np.int32), lv.goal, src, lv.action.astype(np.int32), lv.key,
-            lv.flags.astype(np.uint8), lv.fits, lv.exact,
+            lv.ids, lv.enabled, lv.goal, lv.src, lv.action, lv.key, lv.flags, lv.fits, lv.exact
         )  # fmt: skip
 
     def add_expansion_arrays(self, *arrays: np.ndarray) -> None:
-        """The columns of one expansion in :data:`.checkpoint._EXPANSION` order."""
-        names = ("ids", "enabled", "goal", "src", "action", "key", "flags", "fits", "exact")
-        for name, a in zip(names, arrays, strict=True):
+        """The columns of one expansion in :data:`.shard.COLUMNS` order."""
+        for name, a in zip(COLUMNS, arrays, strict=True):
             getattr(self, name).append(a)
 
 
-def _merge_levels(parts: list[Level]) -> Level:
+def _merge_levels(parts: list[Level], after_violation: str) -> Level:
     """The shards' expansions of one level as one, transitions in (source id, action) order."""
     if len(parts) == 1:
         return parts[0]
@@ -233,15 +232,19 @@ def _merge_levels(parts: list[Level]) -> Level:
     def edges(name: str) -> np.ndarray:
         return cat([getattr(p, name) for p in parts])[by_src]  # type: ignore[no-any-return]
 
+    flags, fits = cat([p.flags for p in parts]), cat([p.fits for p in parts])
+    follow = followed(fits, flags, after_violation)
+    keys = np.zeros(len(src), dtype=parts[0].key.dtype)
+    keys[follow] = cat([p.key for p in parts])
     return Level(
         ids[by_id],
         cat([p.enabled for p in parts])[by_id],
         cat([p.goal for p in parts])[by_id],
         src[by_src],
         edges("action"),
-        edges("key"),
-        edges("flags"),
-        edges("fits"),
+        keys[by_src][follow[by_src]],
+        flags[by_src],
+        fits[by_src],
         edges("exact"),
         [],
     )
@@ -315,15 +318,15 @@ def explore_keys(
         if max_states is not None and total > max_states:
             limit = Limit.MAX_STATES
             break
-        next_level = _next_level_estimate(rec, len(frontier))
-        if max_bytes is not None and held + next_level > max_bytes:
-            limit, needed = Limit.MAX_MEMORY, held + next_level
+        projected = int((held + _next_level_estimate(rec, len(frontier))) * PEAK_FACTOR)
+        if max_bytes is not None and projected > max_bytes:
+            limit, needed = Limit.MAX_MEMORY, projected
             break
         if progress and isinstance(pool, LocalShards) and count == 1:
             lv_parts = [pool.shards[0].expand(batch, partial(_tick, progress, level, total))]
         else:
             lv_parts = pool.map("expand", [(batch,)] * count)
-        lv = _merge_levels(lv_parts)
+        lv = _merge_levels(lv_parts, after_violation)
         rec.add_expansion(lv)
         merged = pool.map("merge", [([p.routed[o] for p in lv_parts],) for o in range(count)])
         new_keys = np.concatenate([m[0] for m in merged])
@@ -356,7 +359,7 @@ def _tick(progress: ProgressTick, level: int, states: int, done: int, frontier: 
 def _next_level_estimate(rec: _Records, frontier: int) -> int:
     """Bytes the next level will add: the last level's bytes per expanded state times the frontier."""
     if not rec.ids:
-        return 0
+        return BYTES_PER_STATE * frontier
     last = sum(int(getattr(rec, f)[-1].nbytes) for f in ("ids", "enabled", "goal", "src", "action", "key"))
     last += sum(int(getattr(rec, f)[-1].nbytes) for f in ("flags", "fits", "exact"))
     per_state = last / max(1, len(rec.ids[-1])) + 3 * (rec.keys[-1].itemsize + 12)
@@ -398,13 +401,9 @@ def _build(
     rec.ids.clear()
     edge_fits = take("fits", bool)
     edge_flags = take("flags", np.uint8)
-    edge_key = take("key", codec.dtype)
     # Only the transitions the search follows have a destination id (a violating one's is -1 under "stop").
-    follow = edge_fits if after_violation == "continue" else edge_fits & (edge_flags == 0)
-    wanted = np.nonzero(follow)[0]
-    del follow
-    looked = edge_key[wanted]
-    del edge_key
+    wanted = np.nonzero(followed(edge_fits, edge_flags, after_violation))[0]
+    looked = take("key", codec.dtype)
     by_key = np.argsort(all_keys, kind="stable")
     pos = np.minimum(np.searchsorted(all_keys[by_key], looked), total - 1)
     hit = all_keys[by_key[pos]] == looked

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -29,7 +30,7 @@ def owners(keys: np.ndarray, count: int) -> np.ndarray:
     if keys.dtype == np.int64:
         words = keys.view(np.uint64)
     else:  # fixed-width byte keys: fold their 64-bit words
-        raw = np.ascontiguousarray(keys).view(np.uint64).reshape(len(keys), -1)
+        raw = np.ascontiguousarray(keys).view(np.uint64).reshape(len(keys), keys.dtype.itemsize // 8)
         words = np.bitwise_xor.reduce(raw, axis=1)
     with np.errstate(over="ignore"):
         mixed = words * _MIX
@@ -48,6 +49,7 @@ class Level:
     """(t,) the source state's id, transitions ordered by (source id, action)."""
     action: np.ndarray
     key: np.ndarray
+    """The destination keys of the followed transitions (:func:`followed`), in transition order."""
     flags: np.ndarray
     fits: np.ndarray
     exact: np.ndarray
@@ -85,37 +87,40 @@ class Shard:
 
     def expand(self, batch: int, progress: Callable[[int, int], None] | None = None) -> Level:
         """Expand the whole frontier, ``batch`` states at a time (``progress(done, frontier)`` after each)."""
-        parts = []
+        cols: dict[str, list[np.ndarray]] = {name: [] for name in COLUMNS}
         for start in range(0, len(self.frontier), batch):
+            ids = self.frontier_ids[start : start + batch]
             ex = expand_keys(self.system, self.engine, self.codec, self.frontier[start : start + batch])
-            parts.append((ex, self.frontier_ids[start : start + batch]))
+            src = ids[ex.src]
+            flags = ex.flags.astype(np.uint8)
+            follow = followed(ex.fits, flags, self.after_violation)
+            # Compact each batch at once (int32 ids and actions, uint8 flags, keys of followed
+            # transitions only), so a level's peak is its compact columns, not the engine's.
+            cols["ids"].append(ids)
+            cols["enabled"].append(ex.enabled.astype(np.int32))
+            cols["goal"].append(ex.goal)
+            cols["src"].append(src.astype(np.int32) if len(src) and src[-1] < 2**31 - 1 else src)
+            cols["action"].append(ex.action.astype(np.int32))
+            cols["key"].append(ex.key[follow])
+            cols["flags"].append(flags)
+            cols["fits"].append(ex.fits)
+            cols["exact"].append(ex.exact)
+            del ex
             if progress:
                 progress(min(start + batch, len(self.frontier)), len(self.frontier))
-        cat = _concat
-        ids = cat([p[1] for p in parts], np.int64)
-        src = cat([ids_[ex.src] for ex, ids_ in parts], np.int64)
-        action = cat([ex.action for ex, _ in parts], np.int64)
-        key = cat([ex.key for ex, _ in parts], self.codec.dtype)
-        flags = cat([ex.flags for ex, _ in parts], np.int64)
-        fits = cat([ex.fits for ex, _ in parts], bool)
-        usable = fits if self.after_violation == "continue" else fits & (flags == 0)
+        dtypes: dict[str, Any] = {"ids": np.int64, "enabled": np.int32, "goal": bool, "src": np.int32}
+        dtypes["action"] = np.int32
+        dtypes |= {"key": self.codec.dtype, "flags": np.uint8, "fits": bool, "exact": bool}
+        col = {name: _concat(parts, dtypes[name]) for name, parts in cols.items()}
+        del cols
+        _in_action_order(col, self.after_violation)
+        follow = followed(col["fits"], col["flags"], self.after_violation)
         # Transitions are generated in (source id, action) order, so a key's first occurrence is its least.
-        ck, first = np.unique(key[usable], return_index=True)
-        cs, ca = src[usable][first], action[usable][first]
+        ck, first = np.unique(col["key"], return_index=True)
+        cs, ca = col["src"][follow][first], col["action"][follow][first]
         owner = owners(ck, self.count)
-        routed = [(ck[owner == o], cs[owner == o], ca[owner == o]) for o in range(self.count)]
-        return Level(
-            ids,
-            cat([ex.enabled for ex, _ in parts], np.int64),
-            cat([ex.goal for ex, _ in parts], bool),
-            src,
-            action,
-            key,
-            flags,
-            fits,
-            cat([ex.exact for ex, _ in parts], bool),
-            routed,
-        )
+        routed = [(ck[owner == o], cs[owner == o].astype(np.int64), ca[owner == o]) for o in range(self.count)]
+        return Level(**col, routed=routed)
 
     def merge(self, parts: list[tuple[np.ndarray, np.ndarray, np.ndarray]]) -> tuple[np.ndarray, ...]:
         """De-duplicate the candidates routed here: the new keys (sorted), each with its least
@@ -146,8 +151,34 @@ class Shard:
         return int(self.visited.nbytes + self.frontier.nbytes + self.frontier_ids.nbytes)
 
 
+COLUMNS = ("ids", "enabled", "goal", "src", "action", "key", "flags", "fits", "exact")
+"""A :class:`Level`'s columns, in order (the checkpoint files hold the same)."""
+
+
+def _in_action_order(col: dict[str, np.ndarray], after_violation: str) -> None:
+    """Put a level's transitions in (source id, action) order where an engine generated them otherwise
+    (the ASYNC engines list a robot's stop after its move), so the first transition reaching a key is
+    its least and the edge columns are ordered the same for every engine."""
+    src, action = col["src"], col["action"]
+    if not len(src) or ((src[1:] != src[:-1]) | (action[1:] > action[:-1])).all():
+        return
+    order = np.lexsort((action, src))
+    follow = followed(col["fits"], col["flags"], after_violation)
+    full = np.zeros(len(src), dtype=col["key"].dtype)
+    full[follow] = col["key"]
+    for name in ("src", "action", "flags", "fits", "exact"):
+        col[name] = col[name][order]
+    col["key"] = full[order][follow[order]]
+
+
+def followed(fits: np.ndarray, flags: np.ndarray, after_violation: str) -> np.ndarray:
+    """The transitions the search follows: inside the bound and, unless ``after_violation`` is
+    ``"continue"``, violating nothing."""
+    return fits if after_violation == "continue" else fits & (flags == 0)  # type: ignore[no-any-return]
+
+
 def _concat(parts: list[np.ndarray], dtype: object) -> np.ndarray:
     return np.concatenate(parts) if parts else np.zeros(0, dtype=dtype)  # type: ignore[call-overload]
 
 
-__all__ = ["Level", "Shard", "owners"]
+__all__ = ["COLUMNS", "Level", "Shard", "followed", "owners"]
