@@ -42,8 +42,8 @@ from ..algorithm import decide
 from ..config import Model
 from ..options import Goal
 from ..properties import Lemma
-from ..schedule import closest_dist2, collides
 from ..systems.base import Expansion, KeyExpansion
+from .fast import pair_collides, snapshot_cells
 from .lattice import KeyCodec
 
 _CORNER_NONE, _CORNER_H, _CORNER_V = 0, 1, 2
@@ -547,14 +547,7 @@ class CompiledEngine:
 
     # --- the model's answers, for keys never seen ----------------------------------------------
     def _decode_snapshot(self, key: int, n: int) -> list[tuple[int, int]]:
-        sentinel = self.side * self.side
-        mask = (1 << self.cell_bits) - 1
-        out = []
-        for k in range(n - 1):
-            code = (key >> (self.cell_bits * (n - 2 - k))) & mask
-            if code != sentinel:
-                out.append((code // self.side - self.reach, code % self.side - self.reach))
-        return out
+        return snapshot_cells(key, n, self.cell_bits, self.side, self.reach)
 
     def _learn_decisions(self, keys: np.ndarray, n: int) -> None:
         keys = distinct(keys)
@@ -570,27 +563,8 @@ class CompiledEngine:
             rows[r] = (dest[0], dest[1], kind)
         self.decisions.insert(keys, rows)
 
-    @staticmethod
-    def _path(dest: tuple[int, int], kind: int) -> tuple[tuple[int, int], ...]:
-        if dest == (0, 0):
-            return ((0, 0),)
-        if kind == _CORNER_H:
-            return ((0, 0), (dest[0], 0), dest)
-        if kind == _CORNER_V:
-            return ((0, 0), (0, dest[1]), dest)
-        return ((0, 0), dest)
-
     def _pair_answer(self, key: int) -> int:
-        cb, key = key & 3, key >> 2
-        ca, key = key & 3, key >> 2
-        vals = []
-        for _ in range(6):
-            vals.append((key & 0xFF) - 128)
-            key >>= 8
-        bdy, bdx, ady, adx, oy, ox = vals
-        pi = None if (adx, ady) == (0, 0) else self._path((adx, ady), ca)
-        pj = None if (bdx, bdy) == (0, 0) else tuple((x + ox, y + oy) for x, y in self._path((bdx, bdy), cb))
-        return int(collides(closest_dist2(pi, pj, (0, 0), (ox, oy), self.model), self.model))
+        return pair_collides(key, self.model)
 
     def _learn_pairs(self, keys: np.ndarray) -> None:
         keys = distinct(keys)

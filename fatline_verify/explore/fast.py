@@ -30,6 +30,45 @@ from .lattice import KeyTable, connected, goal_positions
 _CORNER_NONE, _CORNER_H, _CORNER_V = 0, 1, 2
 
 
+def snapshot_cells(key: int, n: int, cell_bits: int, side: int, reach: int) -> list[tuple[int, int]]:
+    """The visible offsets packed in a snapshot key (``n - 1`` cell codes of ``cell_bits`` bits, the
+    sentinel ``side * side`` for an unseen robot); both vectorised engines pack snapshots this way."""
+    sentinel = side * side
+    mask = (1 << cell_bits) - 1
+    out = []
+    for k in range(n - 1):
+        code = (key >> (cell_bits * (n - 2 - k))) & mask
+        if code != sentinel:
+            out.append((code // side - reach, code % side - reach))
+    return out
+
+
+def relative_path(dest: tuple[int, int], corner: int) -> tuple[tuple[int, int], ...]:
+    """A robot's path from the origin to ``dest``: straight, or L-shaped with its corner kind."""
+    if dest == (0, 0):
+        return ((0, 0),)
+    if corner == _CORNER_H:
+        return ((0, 0), (dest[0], 0), dest)
+    if corner == _CORNER_V:
+        return ((0, 0), (0, dest[1]), dest)
+    return ((0, 0), dest)
+
+
+def pair_collides(key: int, model: Model) -> int:
+    """The exact collision answer for a packed pair situation: the offset of robot j from robot i, each
+    one's relative move (8 bits a field, offset by 128) and corner kinds (2 bits each)."""
+    cb, key = key & 3, key >> 2
+    ca, key = key & 3, key >> 2
+    vals = []
+    for _ in range(6):
+        vals.append((key & 0xFF) - 128)
+        key >>= 8
+    bdy, bdx, ady, adx, oy, ox = vals
+    pi = None if (adx, ady) == (0, 0) else relative_path((adx, ady), ca)
+    pj = None if (bdx, bdy) == (0, 0) else tuple((x + ox, y + oy) for x, y in relative_path((bdx, bdy), cb))
+    return int(collides(closest_dist2(pi, pj, (0, 0), (ox, oy), model), model))
+
+
 class FastEngine:
     """Vectorised engine of the round systems; produces exactly the scalar engine's expansion."""
 
@@ -65,14 +104,7 @@ class FastEngine:
         return key
 
     def _decode_snapshot(self, key: int, n: int) -> list[tuple[int, int]]:
-        sentinel = self.side * self.side
-        mask = (1 << self.cell_bits) - 1
-        out = []
-        for k in range(n - 1):
-            code = (key >> (self.cell_bits * (n - 2 - k))) & mask
-            if code != sentinel:
-                out.append((code // self.side - self.reach, code % self.side - self.reach))
-        return out
+        return snapshot_cells(key, n, self.cell_bits, self.side, self.reach)
 
     def _destinations(self, states: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         n = states.shape[1]
@@ -95,15 +127,6 @@ class FastEngine:
         return got[..., :2], got[..., 2]
 
     # --- collisions -------------------------------------------------------------------------
-    def _path(self, dest: tuple[int, int], corner: int) -> tuple[tuple[int, int], ...]:
-        if dest == (0, 0):
-            return ((0, 0),)
-        if corner == _CORNER_H:
-            return ((0, 0), (dest[0], 0), dest)
-        if corner == _CORNER_V:
-            return ((0, 0), (0, dest[1]), dest)
-        return ((0, 0), dest)
-
     def _case_table(self, n: int) -> np.ndarray:
         """(2^n, P): for each activation mask and pair i<j, the case that applies (-1: neither moves)."""
         ii, jj = np.triu_indices(n, 1)
@@ -167,16 +190,7 @@ class FastEngine:
         return np.array([[self._pair_from_key(int(k))] for k in keys[first]], dtype=np.int64).reshape(-1, 1)
 
     def _pair_from_key(self, key: int) -> int:
-        cb, key = key & 3, key >> 2
-        ca, key = key & 3, key >> 2
-        vals = []
-        for _ in range(6):
-            vals.append((key & 0xFF) - 128)
-            key >>= 8
-        bdy, bdx, ady, adx, oy, ox = vals
-        pi = None if (adx, ady) == (0, 0) else self._path((adx, ady), ca)
-        pj = None if (bdx, bdy) == (0, 0) else tuple((x + ox, y + oy) for x, y in self._path((bdx, bdy), cb))
-        return int(collides(closest_dist2(pi, pj, (0, 0), (ox, oy), self.model), self.model))
+        return pair_collides(key, self.model)
 
     # --- goal -------------------------------------------------------------------------------
     def _goal(self, states: np.ndarray) -> np.ndarray:
