@@ -288,7 +288,7 @@ def test_cache_hits_do_not_ask_the_model_again():
 
 
 def test_hash_table_grows_and_keeps_every_row():
-    from fatline_verify.explore.compiled import _find
+    from fatline_verify.explore.hashtable import find as _find
 
     table = HashTable(2, capacity=4)
     rng = np.random.default_rng(1)
