@@ -15,12 +15,14 @@ from typing import Any
 from .config import Model
 from .outputs import Kind, child, is_output, read_json, write_json
 from .prover import ProofResult, Task, prove_fingerprint, task_key, tasks_for
-from .smt import obligations as ob
+from .smt.solving import solver_version
 from .trace import write_trace
 
 
 def row_key(row: dict[str, Any]) -> str:
-    return f"{row['lemma']}/{row['form']}-{row['rule']}"
+    """``lemma/form-case[.and.other]`` (rows before encoding 3 had no case: their rule stands in)."""
+    tail = f".and.{row['other']}" if row.get("other") else ""
+    return f"{row['lemma']}/{row['form']}-{row.get('case', row['rule'])}{tail}"
 
 
 def witness_path(model: Model, directory: Path, key: str) -> Path:
@@ -55,7 +57,7 @@ class ProofResults:
 
     def add(self, r: ProofResult) -> None:
         """Record one finished obligation (its trace first, then the row), and save."""
-        key = f"{r.lemma}/{r.form}-{r.rule}"
+        key = r.key
         trace = None
         if r.witness is not None:
             path = witness_path(self.model, self.traces, key)
@@ -66,6 +68,8 @@ class ProofResults:
             "lemma": r.lemma,
             "form": r.form,
             "rule": r.rule,
+            "case": r.case,
+            "other": r.other,
             "verdict": r.verdict.value,
             "slots": r.slots,
             "timeout": self.timeout,
@@ -74,6 +78,7 @@ class ProofResults:
             "reason": r.reason,
             "smt2": r.smt2,
             "trace": trace,
+            "configuration": list(r.configuration),
         }
         self.save()
 
@@ -91,7 +96,7 @@ class ProofResults:
         return {
             "format": Kind.PROVE.value,
             "model": self.model.name,
-            "solver": ob.solver_version(),
+            "solver": solver_version(),
             "fingerprint": prints.pop() if len(prints) == 1 else None,
             "obligations": rows,
         }

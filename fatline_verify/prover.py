@@ -1,42 +1,68 @@
-"""``fatline prove``: the collision and connectivity lemmas over the reals, per rule, with z3.
+"""``fatline prove``: each lemma per decision case with z3: PROVED for swarms of every size, or
+VIOLATED with a counterexample the executable model replays from an initial configuration.
 
-For every lemma form and every rule that moves r, an obligation asks for a configuration where the
-rule breaks the lemma (:mod:`fatline_verify.smt.obligations`). Answers become verdicts only this way:
+Obligations (:mod:`fatline_verify.smt.claims`) name r, the witnesses of r's case, and the robot the
+claim is about; the rest of any swarm is covered by the witness argument written in each one's
+header. Each obligation runs in a fresh process (:mod:`fatline_verify.fresh`) and is decided in
+three steps, each with its own z3 context and deterministic budget:
 
-- ``unsat`` with enough slot robots for the witness argument: PROVED for swarms of every size;
-  with fewer: HOLDS_WITHIN_BOUNDS for configurations of at most k + 1 robots.
-- ``sat``: the model is turned into exact rationals (irrational values rounded and re-checked) and
-  replayed by the executable model. Only if the replay shows the violation is it a counterexample:
-  VIOLATED when the configuration is an initial one (so the violation is reachable in one round),
-  INCONCLUSIVE otherwise (a violating configuration whose reachability is not decided). A replay that
-  disagrees is an encoding disagreement: a bug of the tool, reported as such.
-- ``unknown`` (timeout): INCONCLUSIVE with the solver's reason.
+1. **Vacuity**: if "r makes this case's decision" has no solution over the reals, the case never
+   fires under the model's readings: PROVED, "the case never fires".
+2. **Lattices first**: the named robots on the lattices ``x = X / q`` (q = 1, 2, 4, 20; integer
+   arithmetic) with the paper's initial condition on them. A solution is replayed by the executable
+   model: if r decides the same case, the claim fails and the configuration is initial, VIOLATED. A
+   placement that does not replay as initial is blocked and the search goes on.
+3. **The reals** (not for two movers: their group obligations are beyond any budget tried), without
+   the initial condition: ``unsat`` is PROVED (every size, by the header's
+   argument); ``sat`` is replayed, VIOLATED if the configuration is initial, otherwise INCONCLUSIVE
+   with the configuration and what would decide it; ``unknown`` is INCONCLUSIVE with the budget.
+
+A replay that disagrees with the encoding (r decides another case, or the claim holds) is a bug of
+the tool and reported as "encoding disagreement". The global form of Lemma 1 (the whole graph)
+has no witness argument and keeps its bounded slot encoding (:func:`prove_global`).
 """
 
 from __future__ import annotations
 
-import multiprocessing
-import multiprocessing.connection
 import os
-import signal
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
-from multiprocessing.connection import Connection
 from pathlib import Path
-from typing import Any, cast
+from typing import Any
 
-from .algorithm import Rule
+from .algorithm import Band, Decision
+from .cases import Case, case_of, moving_cases, staying_cases
 from .config import Model
-from .options import Scheduler, Uncovered
+from .errors import InvalidInput
+from .fresh import isolated, run_fresh
+from .geometry import dist2
+from .numbers import Point, show_point
+from .options import Scheduler
 from .properties import Lemma, Verdict
 from .schedule import Collision, decide_all, lost_edges, play_round
 from .schedulers import round_scheduler
 from .simulate import Outcome, Run, outcome_after
 from .smt import obligations as ob
-from .smt.symbolic import MOVING
+from .smt.claims import CLOSER, GLOBAL, ONE_MOVER, SEEN, TWO_MOVERS, X_NONDECREASING, NotEncoded, Spec, argument
 from .swarm import initial_problems
 from .trace import replayed_document
+
+ENCODED = (Scheduler.SSYNC, Scheduler.FSYNC, Scheduler.CENTRALIZED)
+"""The schedulers the obligations encode: every mover decides on one shared snapshot."""
+
+LATTICES = (1, 2, 4, 20)
+"""The lattices ``x = X / q`` searched for an initial counterexample before the reals."""
+
+SHARE = {"vacuity": 0.05, "lattice": 0.08, "reals": 0.5}
+"""Each step's share of the per-obligation budget (each lattice gets ``lattice``)."""
+
+MAX_BLOCKED = 4
+"""Non-initial lattice placements blocked per lattice before moving on."""
+
+
+class NotEncodedScheduler(InvalidInput):
+    """``fatline prove`` on a scheduler the obligations do not encode (exit 2, before any work)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -48,98 +74,309 @@ class ProofResult:
     rule: str
     verdict: Verdict
     slots: int
+    """Named robots besides r (the global form: slot robots)."""
     any_size: bool
     seconds: float
     reason: str
     smt2: str
     witness: dict[str, Any] | None = field(default=None, repr=False, compare=False)
     comment: str = field(default="", repr=False, compare=False)
+    case: str = "any"
+    other: str = ""
+    configuration: tuple[str, ...] = ()
+    """For a claim without a trace (``seen``, ``x-nondecreasing``, ``closer``): the replayed
+    configuration, r first, as exact ``x,y`` strings in radii."""
+
+    @property
+    def key(self) -> str:
+        tail = f".and.{self.other}" if self.other else ""
+        return f"{self.lemma}/{self.form}-{self.case}{tail}"
 
 
-def rules_for(model: Model) -> list[Rule]:
-    """The moving rules this model's readings can fire."""
-    rules = [r for r in MOVING if r is not Rule.UNCOVERED_SEARCH or model.options.uncovered is Uncovered.SEARCH_BOTH]
-    return rules
+# --- which obligations a model has ----------------------------------------------------------------
+
+LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
+"""The lemmas the prover decides, in results order."""
 
 
-def replay_answer(
-    model: Model, lemma: Lemma, form: str, rule: Rule, points: tuple[tuple[Fraction, Fraction], ...]
-) -> tuple[dict[str, Any], bool] | str:
-    """Replay a sat model; return (trace, is_initial) or the reason it does not reproduce."""
-    state = ((0, 0), *(model.to_lattice(p) for p in points))
-    active = [0] if form == "one-mover" else [0, 1]
+@dataclass(frozen=True, slots=True)
+class GlobalTask:
+    """Lemma 1 in its global form (the whole graph after one round)."""
+
+    lemma: Lemma = Lemma.CONNECTIVITY
+    form: str = GLOBAL
+
+    @property
+    def key(self) -> str:
+        return f"{self.lemma}/{GLOBAL}-any"
+
+
+Task = Spec | GlobalTask
+
+
+def rule_groups(cases: Sequence[Case]) -> list[tuple[str, tuple[Case, ...]]]:
+    """The moving cases grouped by rule (a second mover's obligations take one group each)."""
+    groups: dict[str, list[Case]] = {}
+    for case in cases:
+        groups.setdefault(case.rule.value, []).append(case)
+    return [(name, tuple(group)) for name, group in groups.items()]
+
+
+def check_encoded(model: Model) -> None:
+    """Refuse a scheduler the obligations do not encode: never another scheduler's semantics."""
+    scheduler = model.options.scheduler
+    if scheduler not in ENCODED:
+        raise NotEncodedScheduler(
+            f"scheduler={scheduler}: fatline prove encodes rounds in which every mover decides on one shared "
+            f"snapshot ({', '.join(s.value for s in ENCODED)}); an asynchronous robot may decide on a stale view. "
+            f"Use fatline check {model.name} for this scheduler"
+        )
+
+
+def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS) -> list[Task]:
+    """Every obligation ``prove`` decides for ``model`` and ``lemmas``, in results order."""
+    check_encoded(model)
+    scheduler = model.options.scheduler
+    moving = moving_cases(model)
+    stays = tuple(staying_cases(model)) if scheduler is Scheduler.FSYNC else ()
+    groups = rule_groups(moving) if scheduler is not Scheduler.CENTRALIZED else []
+    tasks: list[Task] = []
+    for lemma in lemmas:
+        if lemma in (Lemma.NO_COLLISION, Lemma.CONNECTIVITY):
+            tasks += [Spec.of(lemma, ONE_MOVER, c, stays, "o-stays" if stays else "") for c in moving]
+            tasks += [
+                Spec(lemma, TWO_MOVERS, mine, theirs, other)
+                for k, (_, mine) in enumerate(groups)
+                for other, theirs in groups[k:]
+            ]
+        if lemma is Lemma.CONNECTIVITY:
+            tasks += [Spec.of(lemma, CLOSER, c) for c in moving if c.rule.value in CLOSER_RULES]
+            tasks.append(GlobalTask())
+        if lemma is Lemma.RMA_FIXED:
+            tasks += [Spec.of(lemma, SEEN, c) for c in moving]
+        if lemma is Lemma.APPROACH:
+            tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
+    return tasks
+
+
+CLOSER_RULES = ("scenario-1", "scenario-2", "scenario-3", "uncovered-search")
+"""The rules Lemma 1's proof argues about ("under scenario 2 and 3 ... it becomes closer")."""
+
+
+def task_key(task: Task) -> str:
+    """``lemma/form-case[.and.other]``: how results rows and witness files name an obligation."""
+    return task.key
+
+
+# --- replay -----------------------------------------------------------------------------------------
+
+
+@dataclass
+class Replayed:
+    """A solver answer turned into a configuration and checked by the executable model."""
+
+    state: tuple[Point, ...]
+    """Lattice units, r first."""
+    focus: int | None
+    initial: bool
+    problems: list[str]
+    doc: dict[str, Any] | None
+    what: str
+
+
+def _state(model: Model, positions: dict[str, tuple[Fraction, Fraction]], focus: str) -> tuple[list[Point], int | None]:
+    """The distinct robots named (equal centres are one robot), r first, and the focus's index."""
+    points: list[Point] = []
+    for name in ["r", *[n for n in positions if n != "r"]]:
+        p = model.to_lattice(positions[name])
+        if p not in points:
+            points.append(p)
+    index = points.index(model.to_lattice(positions[focus])) if focus else None
+    return points, index
+
+
+def replay(model: Model, spec: Spec, positions: dict[str, tuple[Fraction, Fraction]], focus: str) -> Replayed | str:
+    """Replay a solution: the state, r's case, the claim; or why it does not reproduce."""
+    points, j = _state(model, positions, focus)
+    state = tuple(points)
     decisions = decide_all(state, model)
-    if decisions[0].rule is not rule or not decisions[0].moves:
-        return f"r fires {decisions[0].rule.value}, not {rule.value}"
-    if form == "two-movers" and not decisions[1].moves:
-        return "the second robot does not move"
+    got = case_of(decisions[0], model)
+    if got not in spec.mine:
+        return f"r decides {got.name}, not {spec.name}"
+    problems = initial_problems(state, model)
+    initial = not problems
+    form = spec.form
+    if form in (SEEN, X_NONDECREASING, CLOSER):
+        what = _claim_fails(model, spec, state, decisions[0], j)
+        if what is None:
+            return "the claim holds on the replayed configuration"
+        return Replayed(state, j, initial, problems, None, what)
+    assert j is not None
+    other = case_of(decisions[j], model)
+    fsync = model.options.scheduler is Scheduler.FSYNC
+    if form == TWO_MOVERS and other not in spec.other:
+        return f"the second robot decides {other.name}, not one of {spec.other_name}"
+    if form == ONE_MOVER and fsync and other not in spec.other:
+        return f"the robot at rest decides {other.name}, and moves"
+    movers = [i for i, d in decisions.items() if d.moves]
+    active = movers if fsync else [0, j] if form == TWO_MOVERS else [0]
+    if round_scheduler(model.options.scheduler).forbids(tuple(active), len(state)) is not None:
+        return f"activation {active} is not a round of the scheduler"
     result = play_round(state, active, model, decisions)
-    focus: Lemma
-    if lemma == Lemma.NO_COLLISION:
-        if not any(isinstance(v, Collision) and v.robots == (0, 1) for v in result.violations):
-            return "r and robot 1 do not collide in the replayed round"
-        focus = Lemma.NO_COLLISION
+    if spec.lemma is Lemma.NO_COLLISION:
+        hit = [v for v in result.violations if isinstance(v, Collision) and v.robots == (0, j)]
+        if not hit:
+            return f"r and robot {j} do not collide in the replayed round"
+        focus_lemma, what = Lemma.NO_COLLISION, "collision"
     else:
-        if not any(pair == (0, 1) for pair, _ in lost_edges(result.before, result.after, model)):
-            return "r and robot 1 keep their edge in the replayed round"
-        disconnected = any(v.lemma == Lemma.CONNECTIVITY for v in result.violations)
-        focus = Lemma.CONNECTIVITY if disconnected else Lemma.CONNECTIVITY_EDGE
+        if not any(pair == (0, j) for pair, _ in lost_edges(result.before, result.after, model)):
+            return f"r and robot {j} keep their edge in the replayed round"
+        split = any(v.lemma == Lemma.CONNECTIVITY for v in result.violations)
+        focus_lemma = Lemma.CONNECTIVITY if split else Lemma.CONNECTIVITY_EDGE
+        what = "an edge is lost and the graph splits" if split else "an edge is lost (the graph stays connected)"
     run = Run(model, state, (result,), outcome_after(result.after, result, model) or Outcome.ROUND_LIMIT)
-    origin = {"tool": "fatline prove", "lemma": lemma, "form": form, "rule": rule.value}
-    return replayed_document(run, origin, focus), not initial_problems(state, model)
+    origin = {"tool": "fatline prove", "lemma": spec.lemma, "form": form, "case": spec.name}
+    if spec.other_name:
+        origin["other"] = spec.other_name
+    doc = replayed_document(run, origin, focus_lemma)
+    return Replayed(state, j, initial, problems, doc, what)
 
 
-def prove_one(
-    model: Model, lemma: Lemma, form: str, rule: Rule, *, slots: int, timeout: float, out: Path | None
-) -> ProofResult:
-    """Decide one obligation (see the module docstring for the verdict rules).
+def _claim_fails(model: Model, spec: Spec, state: Sequence[Point], dec: Decision, j: int | None) -> str | None:
+    """How r's decision breaks a per-rule claim on ``state`` (``None`` if it does not)."""
+    dx, dy = dec.destination
+    dest = show_point(model.from_lattice(dec.destination))
+    if spec.form == X_NONDECREASING:
+        return f"r moves to {dest}: x decreases" if dx < 0 else None
+    if spec.form == SEEN:
+        seen = [c for c, _ in dec.classification]
+        if dx > 0 and all(c[0] < dx for c in seen):
+            return f"r moves to {dest}, right of itself and of every robot it sees"
+        return None
+    assert j is not None
+    rel = (state[j][0] - state[0][0], state[j][1] - state[0][1])
+    bands = dict(dec.classification).get(rel, frozenset())
+    if bands & {Band.B, Band.C, Band.D} and dist2(rel, (dx, dy)) >= dist2(rel, (0, 0)):
+        where = show_point(model.from_lattice(rel))
+        return f"r moves to {dest} and is not closer to the robot at {where} in {'/'.join(sorted(bands))}"
+    return None
 
-    The artefact written is always the full obligation with ``slots`` slot robots, whatever answered
-    first, so the ``.smt2`` files depend only on the model and ``slots``.
-    """
+
+# --- one obligation ---------------------------------------------------------------------------------
+
+
+def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) -> ProofResult:
+    """Decide one obligation (see the module docstring); write its real-number form under ``out``."""
+    from .smt.cases import Arith
+    from .smt.claims import build
+    from .smt.solving import block, check, solver_for, write
+
+    spent = 0.0
     try:
-        full = ob.build(model, lemma, form, rule, slots)
-    except ob.NotEncoded as exc:
-        return ProofResult(lemma, form, rule.value, Verdict.INCONCLUSIVE, slots, False, 0.0, str(exc), "")
+        full = build(Arith(None), model, spec)
+    except NotEncoded as exc:
+        return _result(spec, Verdict.INCONCLUSIVE, 0, 0.0, f"not encoded: {exc}", "", None)
+    full.comment = argument(model, spec, full)
+    named = len(full.bodies) - 1
     path = ""
     if out is not None:
-        target = out / lemma / f"{full.name}.smt2"
-        ob.write(full, target)
-        path = str(target)
-    spent = 0.0
+        target = out / spec.lemma / f"{spec.key.split('/', 1)[1]}.smt2"
+        write(full, target)
+        path = target.as_posix()
 
-    def result(verdict: Verdict, k: int, reason: str, doc: dict[str, Any] | None = None) -> ProofResult:
-        return ProofResult(lemma, form, rule.value, verdict, k, full.any_size, spent, reason, path, doc, full.comment)
+    def result(verdict: Verdict, reason: str, rep: Replayed | None = None) -> ProofResult:
+        return _result(spec, verdict, named, spent, reason, path, rep, full.comment)
 
-    for k in range(1, slots + 1):  # a counterexample from an initial configuration, smallest first
-        ans = ob.solve(ob.build(model, lemma, form, rule, k, initial=True), timeout / slots)
-        spent += ans.seconds
-        if ans.status == "sat":
-            got = replay_answer(model, lemma, form, rule, ans.positions)
-            if isinstance(got, str):
-                return result(Verdict.INCONCLUSIVE, k, f"encoding disagreement: {got}")
-            doc, initial = got
-            if initial:
-                return result(Verdict.VIOLATED, k, _found(doc, k, ans.rounded), doc)
-    ans = ob.solve(full, timeout)
+    vac = build(Arith(None), model, spec, vacuity=True)
+    seconds = timeout * SHARE["vacuity"]
+    ans = check(solver_for(vac, seconds), vac, seconds)
     spent += ans.seconds
     if ans.status == "unsat":
-        if full.any_size:
-            return result(Verdict.PROVED, slots, "unsat: holds for swarms of every size")
-        return result(Verdict.HOLDS_WITHIN_BOUNDS, slots, f"unsat for configurations of at most {slots + 1} robots")
+        return result(Verdict.PROVED, f"the case never fires under these readings (vacuous; {spent:.2f} s)")
+    for q in LATTICES:
+        try:
+            lat = build(Arith(q), model, spec, initial=True)
+        except (ValueError, NotEncoded):
+            continue  # a constant off this lattice, or a form searched over the reals only
+        seconds = timeout * SHARE["lattice"]
+        solver = solver_for(lat, seconds)
+        for _ in range(MAX_BLOCKED):
+            ans = check(solver, lat, seconds)
+            spent += ans.seconds
+            if ans.status != "sat":
+                break
+            got = replay(model, spec, ans.positions, lat.focus)
+            if isinstance(got, str):
+                return result(Verdict.INCONCLUSIVE, f"encoding disagreement (lattice q={q}): {got}")
+            if got.initial:
+                return result(Verdict.VIOLATED, _found(got, f"lattice q={q}"), got)
+            block(solver, lat, ans.positions)
+    if spec.form == TWO_MOVERS:
+        return result(
+            Verdict.INCONCLUSIVE,
+            f"no initial counterexample on the lattices q={', '.join(map(str, LATTICES))}; two-mover obligations "
+            "(every case of both rules, with both robots' witnesses) are not searched over the reals: their real "
+            "form, written to the .smt2 file, is beyond this budget",
+        )
+    seconds = timeout * SHARE["reals"]
+    ans = check(solver_for(full, seconds), full, seconds)
+    spent += ans.seconds
+    if ans.status == "unsat":
+        return result(Verdict.PROVED, "unsat over the reals: holds for swarms of every size (the header's argument)")
     if ans.status == "unknown":
-        return result(Verdict.INCONCLUSIVE, slots, f"solver: {ans.reason}")
-    got = replay_answer(model, lemma, form, rule, ans.positions)
+        return result(
+            Verdict.INCONCLUSIVE,
+            f"solver: {ans.reason}; no initial counterexample on the lattices q={', '.join(map(str, LATTICES))}; "
+            "rerun with a larger --timeout",
+        )
+    got = replay(model, spec, ans.positions, full.focus)
     if isinstance(got, str):
-        return result(Verdict.INCONCLUSIVE, slots, f"encoding disagreement: {got}")
-    doc, initial = got
-    if initial:
-        return result(Verdict.VIOLATED, slots, _found(doc, len(ans.positions), ans.rounded), doc)
+        return result(Verdict.INCONCLUSIVE, f"encoding disagreement (reals): {got}")
+    rounded = "; values rounded from algebraic numbers and re-checked" if ans.rounded else ""
+    if got.initial:
+        return result(Verdict.VIOLATED, _found(got, "reals") + rounded, got)
     return result(
         Verdict.INCONCLUSIVE,
-        slots,
-        "violating configuration found, not an initial one; whether it is reachable is not decided",
-        doc,
+        f"{got.what} in a configuration of {len(got.state)} robots that is not initial ({got.problems[0]}); "
+        f"no initial one on the lattices q={', '.join(map(str, LATTICES))} within the budget; whether it is "
+        "reachable is not decided: rerun with a larger --timeout, or check the configuration's swarm size with "
+        "fatline check",
+        got,
+    )
+
+
+def _found(got: Replayed, where: str) -> str:
+    return f"{got.what}, from an initial configuration of {len(got.state)} robots ({where}, replayed)"
+
+
+def _result(
+    spec: Spec,
+    verdict: Verdict,
+    named: int,
+    seconds: float,
+    reason: str,
+    path: str,
+    rep: Replayed | None,
+    comment: str = "",
+) -> ProofResult:
+    config: tuple[str, ...] = ()
+    if rep is not None and rep.doc is None:
+        config = tuple(f"{x},{y}" for x, y in rep.state)
+    return ProofResult(
+        spec.lemma,
+        spec.form,
+        spec.mine[0].rule.value,
+        verdict,
+        named,
+        True,
+        seconds,
+        reason,
+        path,
+        rep.doc if rep is not None else None,
+        comment,
+        spec.name,
+        spec.other_name,
+        config,
     )
 
 
@@ -196,43 +433,12 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
     return result(Verdict.INCONCLUSIVE, k, f"solver: {ans.reason}")
 
 
-def _found(doc: dict[str, Any], k: int, rounded: bool) -> str:
-    prop = doc["violation"]["property"]
-    what = {
-        Lemma.NO_COLLISION: "collision",
-        Lemma.CONNECTIVITY: "an edge is lost and the visibility graph splits (Lemma 1)",
-        Lemma.CONNECTIVITY_EDGE: "an edge is lost, the visibility graph stays connected (the proof's claim fails)",
-    }[prop]
-    note = "; values rounded from algebraic numbers and re-checked" if rounded else ""
-    return f"{what}, from an initial configuration of {k + 1} robots{note}"
-
-
-Task = tuple[Lemma, str, "Rule | None"]
-"""One obligation: (lemma, form, rule); rule ``None`` is the global connectivity form."""
-
-
-def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = ob.LEMMAS) -> list[Task]:
-    """Every obligation ``prove`` decides for ``model`` and ``lemmas``, in results order."""
-    scheduler = model.options.scheduler
-    forms = ob.forms_for(Scheduler.SSYNC if scheduler not in ENCODED else scheduler)
-    tasks: list[Task] = [(lemma, form, rule) for lemma in lemmas for form in forms for rule in rules_for(model)]
-    if Lemma.CONNECTIVITY in lemmas:
-        tasks.append((Lemma.CONNECTIVITY, "global", None))
-    return tasks
-
-
-def task_key(task: Task) -> str:
-    """``lemma/form-rule``: how results rows and witness files name an obligation."""
-    lemma, form, rule = task
-    return f"{lemma}/{form}-{rule.value if rule is not None else 'any'}"
-
-
 def prove(
     model: Model,
-    lemmas: tuple[Lemma, ...] = ob.LEMMAS,
+    lemmas: tuple[Lemma, ...] = LEMMAS,
     *,
     slots: int = 3,
-    timeout: float = 10.0,
+    timeout: float = 6.0,
     out: Path | None = None,
     jobs: int | None = None,
     progress: Callable[[str], None] | None = None,
@@ -241,23 +447,20 @@ def prove(
 ) -> list[ProofResult]:
     """Every obligation of ``lemmas`` (or exactly ``tasks``) for ``model``; ``.smt2`` files under ``out``.
 
-    Each obligation runs in a fresh process: z3's answers (and times) depend on the terms a process
-    created before, so isolation makes every obligation's answer independent of the others and of
-    the order; it also spreads the obligations over the cores. ``on_result`` sees each result as it
-    finishes (so a caller can save it at once); the list returned is in task order. An interrupt
-    stops the workers at once and propagates.
+    Each obligation runs in a fresh process (:func:`fatline_verify.fresh.run_fresh`), which also
+    spreads them over the cores. ``on_result`` sees each result as it finishes (so a caller can save
+    it at once); the list returned is in task order. An interrupt stops the workers and propagates.
     """
     tasks = tasks_for(model, lemmas) if tasks is None else tasks
     if not tasks:
         return []
-    if model.options.scheduler not in ENCODED:
-        return _not_encoded(model, tasks, slots, on_result, progress)
+    check_encoded(model)
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
     calls = [
-        (prove_one, (model, lemma, form, rule), {"slots": slots, "timeout": timeout, "out": out})
-        if rule is not None
+        (prove_spec, (model, task), {"timeout": timeout, "out": out})
+        if isinstance(task, Spec)
         else (prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out})
-        for lemma, form, rule in tasks
+        for task in tasks
     ]
     results: list[ProofResult | None] = [None] * len(tasks)
 
@@ -272,106 +475,27 @@ def prove(
     return [r for r in results if r is not None]
 
 
-ENCODED = (Scheduler.SSYNC, Scheduler.FSYNC, Scheduler.CENTRALIZED)
-"""The schedulers whose rounds the obligations encode: every mover decides on one shared snapshot."""
-
-
-def _not_encoded(
-    model: Model,
-    tasks: list[Task],
-    slots: int,
-    on_result: Callable[[ProofResult], None] | None,
-    progress: Callable[[str], None] | None,
-) -> list[ProofResult]:
-    """INCONCLUSIVE for every obligation of a scheduler the encoding does not cover: never another
-    scheduler's semantics in its place."""
-    reason = (
-        f"scheduler={model.options.scheduler}: not encoded; the obligations encode rounds in which every mover "
-        "decides on one shared snapshot (ssync, fsync, centralized), and an asynchronous robot may decide on a "
-        "stale view (another robot seen at an earlier point of its path); use fatline check for this scheduler"
-    )
-    results = []
-    for task in tasks:
-        lemma, form, rule = task
-        r = ProofResult(lemma, form, rule.value if rule else "any", Verdict.INCONCLUSIVE, slots, False, 0.0, reason, "")
-        results.append(r)
-        if on_result:
-            on_result(r)
-        if progress:
-            progress(task_key(task))
-    return results
-
-
-Call = tuple[Callable[..., Any], tuple[Any, ...], dict[str, Any]]
-
-
-def _child(conn: Any, fn: Callable[..., Any], args: tuple[Any, ...], kwargs: dict[str, Any]) -> None:
-    """A fresh process's one task: its answer (or its exception) goes back through ``conn``.
-    SIGINT is ignored: an interrupt is the parent's to handle, and the parent kills the workers."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    try:
-        answer: tuple[bool, Any] = (True, fn(*args, **kwargs))
-    except Exception as exc:  # sent to the parent, which raises it there
-        answer = (False, exc)
-    try:
-        conn.send(answer)
-    except Exception as exc:  # an unpicklable answer or exception
-        conn.send((False, RuntimeError(f"{fn.__name__}: {exc.__class__.__name__}: {exc}")))
-    conn.close()
-
-
-def run_fresh(calls: list[Call], workers: int, done: Callable[[int, Any], None]) -> None:
-    """Run each call in a new interpreter (spawn), at most ``workers`` at once; ``done(k, answer)``
-    as each finishes. z3's answers depend on the terms a process created before, so one process per
-    call makes every answer independent of the others and of the order.
-
-    An interrupt (or any error) kills every running worker at once and propagates: nothing waits for
-    a solver to finish. (``ProcessPoolExecutor`` cannot promise that: after ``shutdown`` its manager
-    thread waits for work it has already queued, and interpreter exit waits for the manager.)
-    """
-    ctx = multiprocessing.get_context("spawn")
-    pending = list(enumerate(calls))[::-1]
-    running: dict[Any, tuple[int, Any]] = {}
-    try:
-        while pending or running:
-            while pending and len(running) < workers:
-                k, (fn, args, kwargs) = pending.pop()
-                receive, send = ctx.Pipe(duplex=False)
-                proc = ctx.Process(target=_child, args=(send, fn, args, kwargs), daemon=True)
-                proc.start()
-                send.close()
-                running[receive] = (k, proc)
-            for ready in multiprocessing.connection.wait(list(running)):
-                conn = cast(Connection, ready)
-                k, proc = running.pop(conn)
-                try:
-                    ok, answer = conn.recv()
-                except EOFError:
-                    ok, answer = False, RuntimeError(f"a worker process died (exit code {proc.exitcode})")
-                conn.close()
-                proc.join()
-                if not ok:
-                    raise answer if isinstance(answer, BaseException) else RuntimeError(str(answer))
-                done(k, answer)
-    finally:
-        for conn, (_, proc) in running.items():
-            proc.kill()
-            proc.join(timeout=5)
-            conn.close()
-
-
-def isolated(fn: Callable[..., ProofResult], *args: Any, **kwargs: Any) -> ProofResult:
-    """Run :func:`prove_one` or :func:`prove_global` in a fresh process, as ``fatline prove`` does."""
-    answers: list[ProofResult] = []
-    run_fresh([(fn, args, kwargs)], 1, lambda _, answer: answers.append(answer))
-    return answers[0]
-
-
 def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     """What a prover result depends on: the model, the settings, the encoding's version."""
     from .cache import fingerprint
 
-    return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ob.ENCODING_VERSION)
+    return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-__all__ = ["ProofResult", "Task", "prove", "prove_one", "rules_for", "task_key", "tasks_for"]
+ENCODING_VERSION = 3
+"""Bumped whenever an obligation's meaning changes (part of the cache fingerprint). 3: role-assigned
+obligations per decision case."""
+
+
+__all__ = [
+    "LEMMAS",
+    "GlobalTask",
+    "ProofResult",
+    "Task",
+    "isolated",
+    "prove",
+    "prove_global",
+    "prove_spec",
+    "task_key",
+    "tasks_for",
+]

@@ -434,18 +434,30 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
     return lines
 
 
-PROVE_COLUMNS = ["lemma", "form", "rule", "verdict", "slots", "seconds", "detail", "trace"]
+PROVE_COLUMNS = ["lemma", "form", "case", "verdict", "robots", "seconds", "detail", "trace"]
 
 
 def prove_row(r: dict[str, Any], trace: str) -> list[str]:
-    """One ``results.json`` row as table cells (``trace``: how the page or terminal shows the trace)."""
-    return [r["lemma"], r["form"], r["rule"], r["verdict"], str(r["slots"]), f"{r['seconds']:.1f}", r["reason"], trace]
+    """One ``results.json`` row as table cells (``trace``: how the page or terminal shows the trace).
+    ``robots``: the robots the obligation names besides r (the global form: its slots)."""
+    case = r.get("case", r["rule"]) + (f" + {r['other']}" if r.get("other") else "")
+    return [r["lemma"], r["form"], case, r["verdict"], str(r["slots"]), f"{r['seconds']:.1f}", r["reason"], trace]
+
+
+def prove_counts(results: list[dict[str, Any]]) -> list[str]:
+    """One line per lemma: how many obligations have each verdict."""
+    lines = []
+    for lemma in dict.fromkeys(r["lemma"] for r in results):
+        mine = [r["verdict"] for r in results if r["lemma"] == lemma]
+        counts = ", ".join(f"{mine.count(v)} {v}" for v in dict.fromkeys(sorted(mine)))
+        lines.append(f"{lemma}: {len(mine)} obligations: {counts}")
+    return lines
 
 
 def prove_lines(model: Any, results: list[dict[str, Any]], out: Any) -> list[str]:
-    """The summary of ``fatline prove``: one line per results row."""
+    """The summary of ``fatline prove``: verdict counts per lemma, then one line per results row."""
     rows = [prove_row(r, r.get("trace") or "") for r in results]
-    lines = [f"model {model.describe()}", ""]
+    lines = [f"model {model.describe()}", "", *prove_counts(results), ""]
     lines += table(PROVE_COLUMNS, rows)
     lines += ["", f"obligations (SMT-LIB2, each with its any-size argument) and results.json in {out}"]
     return lines

@@ -8,8 +8,8 @@ from pathlib import Path
 
 from fatline_verify.cli.prove import LEMMA_CHOICES
 from fatline_verify.properties import CHECKED, FLAG, SAFETY, SPECS, Judged, Lemma
+from fatline_verify.prover import LEMMAS
 from fatline_verify.report.pages import PROVER_LEMMAS
-from fatline_verify.smt.obligations import LEMMAS
 
 PACKAGE = Path(__file__).resolve().parent.parent / "fatline_verify"
 TABLE = PACKAGE / "properties.py"

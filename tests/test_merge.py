@@ -9,8 +9,8 @@ from pathlib import Path
 from fatline_verify import prover
 from fatline_verify.cli import main
 from fatline_verify.config import load_model, shipped_models
-from fatline_verify.proof_results import ProofResults
-from fatline_verify.properties import Verdict
+from fatline_verify.proof_results import ProofResults, row_key
+from fatline_verify.properties import Lemma, Verdict
 from fatline_verify.prover import ProofResult
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -22,13 +22,15 @@ def _fake_prove(verdict: Verdict):
     def fake(model, lemmas=(), *, slots, timeout, out, jobs=None, progress=None, tasks=None, on_result=None):
         tasks = prover.tasks_for(model, lemmas) if tasks is None else tasks
         results = []
-        for lemma, form, rule in tasks:
-            r = ProofResult(lemma, form, rule.value if rule else "any", verdict, slots, False, 0.0, "fake", "")
+        for task in tasks:
+            case = getattr(task, "name", "any")
+            other = getattr(task, "other_name", "")
+            r = ProofResult(task.lemma, task.form, case, verdict, slots, False, 0.0, "fake", "", case=case, other=other)
             results.append(r)
             if on_result:
                 on_result(r)
             if progress:
-                progress(f"{lemma} {form}")
+                progress(task.key)
         return results
 
     return fake
@@ -36,7 +38,7 @@ def _fake_prove(verdict: Verdict):
 
 def _rows(path: Path) -> dict[str, dict]:
     data = json.loads(path.read_text())
-    return {f"{r['lemma']}/{r['form']}-{r['rule']}": r for r in data["obligations"]}
+    return {row_key(r): r for r in data["obligations"]}
 
 
 def test_prove_one_lemma_keeps_the_other_lemmas_rows(tmp_path, monkeypatch, capsys):
@@ -48,14 +50,15 @@ def test_prove_one_lemma_keeps_the_other_lemmas_rows(tmp_path, monkeypatch, caps
     code = main(["prove", "paper", "--lemma", "no-collision", "--out", str(out), "-q"])
     assert code == 3
     after = _rows(out / "paper" / "results.json")
-    assert after.keys() == before.keys()  # 21 rows: none dropped
+    assert after.keys() == before.keys()  # none dropped
     for key, row in after.items():
         if key.startswith("no-collision/"):
             assert row["reason"] == "fake"  # recomputed
         else:
             assert row == {"fingerprint": row["fingerprint"], **before[key]}  # kept as it was
     printed = capsys.readouterr().out.splitlines()
-    assert sum(line.startswith("no-collision ") for line in printed) == 10  # the run's own rows only
+    own = len(prover.tasks_for(load_model("paper"), (Lemma.NO_COLLISION,)))
+    assert sum(line.startswith("no-collision ") for line in printed) == own  # the run's own rows only
     assert not any(line.startswith("connectivity ") for line in printed)
 
 
@@ -76,7 +79,11 @@ def test_store_saves_each_result_and_keeps_foreign_rows(tmp_path):
     store = ProofResults(model, tmp_path, tmp_path / "traces", slots=3, timeout=10.0)
     task = prover.tasks_for(model)[0]
     assert store.fresh(task) is None
-    store.add(ProofResult("no-collision", "one-mover", task[2].value, Verdict.PROVED, 3, True, 1.0, "unsat", ""))
+    store.add(
+        ProofResult(
+            "no-collision", "one-mover", "scenario-1", Verdict.PROVED, 3, True, 1.0, "unsat", "", case=task.name
+        )
+    )
     saved = _rows(tmp_path / "results.json")  # written at once, not at the end of a run
     assert saved["no-collision/one-mover-scenario-1"]["verdict"] == "PROVED"
     assert "no-collision/three-movers-x" in saved

@@ -9,10 +9,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from fatline_verify.algorithm import Rule, decide
+from fatline_verify.algorithm import decide
 from fatline_verify.properties import Verdict
-from fatline_verify.prover import isolated, prove_global, prove_one
-from fatline_verify.smt.obligations import build, evaluate, recheck_file, smt2, solve
+from fatline_verify.prover import isolated, prove_global, prove_spec, tasks_for
+from fatline_verify.smt.obligations import evaluate, recheck_file
 from fatline_verify.trace import check_replay
 from tests.conftest import make_model
 from tests.test_properties import readings
@@ -45,88 +45,116 @@ def test_encoding_agrees_with_decide(snapshot, opts):
     assert dest == tuple(Fr(v) for v in expected.destination)
 
 
-def test_unsat_obligation_stays_unsat_from_its_file(tmp_path):
-    # Two movers, r in Scenario 2, one other robot: it cannot collide with r (unsat with 1 slot).
-    model = make_model()
-    ob = build(model, "no-collision", "two-movers", Rule.SCENARIO_2, 1)
-    assert solve(ob, 10).status == "unsat"
-    path = tmp_path / "ob.smt2"
-    path.write_text(smt2(ob))
-    assert recheck_file(path) == "unsat"
+def _spec(model, key):
+    """The obligation of ``model`` named ``key`` (``lemma/form-case[.and.other]``)."""
+    return next(t for t in tasks_for(model) if t.key == key)
 
 
-def test_second_solver_agrees_on_the_written_files(tmp_path):
+def _cvc5(path):
+    """cvc5's answer to a written file (its own parser: the file alone is the obligation)."""
     cvc5 = pytest.importorskip("cvc5")
-    model = make_model()
-    cases = [
-        (build(model, "no-collision", "two-movers", Rule.SCENARIO_2, 1), "unsat"),
-        (build(model, "no-collision", "one-mover", Rule.SCENARIO_4_I_NONEMPTY, 1), "sat"),
-    ]
-    for ob, expected in cases:
-        assert solve(ob, 10).status == expected
-        path = tmp_path / f"{ob.name}.smt2"
-        path.write_text(smt2(ob))
-        tm = cvc5.TermManager()
-        solver = cvc5.Solver(tm)
-        symbols = cvc5.SymbolManager(tm)
-        parser = cvc5.InputParser(solver, symbols)
-        parser.setFileInput(cvc5.InputLanguage.SMT_LIB_2_6, str(path))
-        answer = None
-        while True:
-            cmd = parser.nextCommand()
-            if cmd.isNull():
-                break
-            said = cmd.invoke(solver, symbols)
-            answer = said.strip() or answer
-        assert answer == expected
+    tm = cvc5.TermManager()
+    solver = cvc5.Solver(tm)
+    solver.setOption("tlimit-per", "60000")
+    symbols = cvc5.SymbolManager(tm)
+    parser = cvc5.InputParser(solver, symbols)
+    parser.setFileInput(cvc5.InputLanguage.SMT_LIB_2_6, str(path))
+    answer = None
+    while True:
+        cmd = parser.nextCommand()
+        if cmd.isNull():
+            break
+        said = cmd.invoke(solver, symbols)
+        answer = said.strip() or answer
+    return answer
 
 
-def test_the_paper_s_scenario_4_drop_collides_and_the_witness_replays():
-    # "y_p = 0 - d + 1": r stops one radius above the top robot of I. A seeded defect of the paper itself.
+def test_a_proved_obligation_stays_unsat_from_its_file_for_both_solvers(tmp_path):
+    # No rule moves r right of every robot it sees, in Scenario 1, for swarms of any size.
     model = make_model()
-    result = isolated(
-        prove_one, model, "no-collision", "one-mover", Rule.SCENARIO_4_I_NONEMPTY, slots=1, timeout=10, out=None
-    )
+    result = isolated(prove_spec, model, _spec(model, "rma-fixed/seen-scenario-1"), timeout=10, out=tmp_path)
+    assert result.verdict is Verdict.PROVED and result.any_size
+    path = tmp_path / "rma-fixed" / "seen-scenario-1.smt2"
+    assert "Why unsat covers swarms of every size" in path.read_text()
+    assert recheck_file(path) == "unsat"
+    assert _cvc5(path) == "unsat"
+
+
+def test_the_paper_s_hidden_robot_scenario_1_collision_is_found_and_replays():
+    # r moves to the foot of psi_right; a robot r cannot see ends closer than 2 to r's destination.
+    model = make_model()
+    result = isolated(prove_spec, model, _spec(model, "no-collision/one-mover-scenario-1"), timeout=10, out=None)
     assert result.verdict is Verdict.VIOLATED
     doc = json.loads(json.dumps(result.witness))
     check_replay(doc, model)
     assert doc["violation"]["property"] == "no-collision"
+    assert doc["rounds"][0]["decisions"][0]["rule"] == "scenario-1"
+
+
+def test_the_paper_s_scenario_4_drop_collides_and_the_witness_replays():
+    # "y_p = 0 - d + 1": r stops one radius above the top robot of I. A defect of the paper itself.
+    model = make_model()
+    key = "no-collision/one-mover-scenario-4-I-nonempty.from-uncovered-neither"
+    result = isolated(prove_spec, model, _spec(model, key), timeout=10, out=None)
+    assert result.verdict is Verdict.VIOLATED
+    doc = json.loads(json.dumps(result.witness))
+    check_replay(doc, model)
     assert doc["rounds"][0]["decisions"][0]["rule"] == "scenario-4-I-nonempty"
     assert Fr(doc["violation"]["closest_distance2"]) < 4
 
 
-def test_unsat_with_too_few_slots_is_only_bounded():
+def test_a_case_that_never_fires_is_proved_vacuously(tmp_path):
+    # Candidate 4 within view (rad_v = 4) needs x_psi = 0, which no B u C u D robot gives.
     model = make_model()
-    result = isolated(prove_one, model, "no-collision", "two-movers", Rule.SCENARIO_2, slots=1, timeout=10, out=None)
-    assert result.verdict is Verdict.HOLDS_WITHIN_BOUNDS
-    assert not result.any_size
-    assert "at most 2 robots" in result.reason
+    result = isolated(
+        prove_spec, model, _spec(model, "no-collision/one-mover-scenario-2.down-4"), timeout=10, out=tmp_path
+    )
+    assert result.verdict is Verdict.PROVED
+    assert "never fires" in result.reason
+    assert recheck_file(tmp_path / "no-collision" / "one-mover-scenario-2.down-4.smt2") == "unsat"
 
 
-def test_scenario_1_unsat_is_a_proof_for_every_size_when_it_holds(tmp_path):
-    # Scenario 1 needs one witness (the psi_right robot), so 2 slots carry the any-size argument.
-    # Under the default readings the edge form of connectivity fails (r can lose a robot it saw), and the
-    # obligation says why unsat would have been enough.
-    model = make_model()
-    result = isolated(prove_one, model, "connectivity", "one-mover", Rule.SCENARIO_1, slots=2, timeout=10, out=tmp_path)
-    assert result.any_size
-    assert "unsat proves the claim for swarms of every size" in result.comment
-    assert result.verdict is Verdict.VIOLATED
-    check_replay(json.loads(json.dumps(result.witness)), model)
-    assert (tmp_path / "connectivity" / "one-mover-scenario-1.smt2").read_text().startswith("; Obligation:")
+def test_literal_quadrants_never_fire_scenario_3():
+    # Under quadrants=literal D is the upper left: R_psi n C and R_psi n D are never both non-empty.
+    model = make_model(quadrants="literal")
+    for task in tasks_for(model):
+        if getattr(task, "form", "") == "seen" and task.mine[0].rule.value == "scenario-3":
+            result = isolated(prove_spec, model, task, timeout=10, out=None)
+            assert result.verdict is Verdict.PROVED and "never fires" in result.reason
+            break
+    else:
+        raise AssertionError("no scenario-3 obligation")
 
 
 def test_seeded_unsafe_reading_is_refuted_with_a_replayed_trace():
     # Seeded: under contact=strict, touching is a collision, and scenario4_drop=touch stops r exactly
     # touching the top robot of I. The prover must find that, from an initial configuration.
     model = make_model(contact="strict", scenario4_drop="touch")
-    result = isolated(
-        prove_one, model, "no-collision", "one-mover", Rule.SCENARIO_4_I_NONEMPTY, slots=2, timeout=10, out=None
-    )
+    key = "no-collision/one-mover-scenario-4-I-nonempty.from-uncovered-neither"
+    result = isolated(prove_spec, model, _spec(model, key), timeout=10, out=None)
     assert result.verdict is Verdict.VIOLATED
     doc = json.loads(json.dumps(result.witness))
     check_replay(doc, model)
     assert Fr(doc["violation"]["closest_distance2"]) <= 4
+
+
+def test_a_claim_counterexample_is_a_configuration_decide_replays():
+    # Lemma 1's argument: in Scenario 2, r moving down is not always closer to the B robots it sees.
+    from fatline_verify.algorithm import Band
+    from fatline_verify.cases import case_of
+
+    model = make_model()
+    result = isolated(prove_spec, model, _spec(model, "connectivity/closer-scenario-2.down-1"), timeout=10, out=None)
+    assert result.verdict is Verdict.VIOLATED
+    state = [tuple(Fr(v) for v in p.split(",")) for p in result.configuration]
+    assert state[0] == (0, 0)
+    dec = decide([p for p in state[1:] if model.sees(p[0] ** 2 + p[1] ** 2)], model)
+    assert case_of(dec, model).name == "scenario-2.down-1"
+    dx, dy = dec.destination
+    assert any(
+        m & {Band.B, Band.C, Band.D} and (c[0] - dx) ** 2 + (c[1] - dy) ** 2 >= c[0] ** 2 + c[1] ** 2
+        for c, m in dec.classification
+    )
 
 
 def test_global_connectivity_form_matches_the_checker_on_two_robots(tmp_path):
@@ -144,12 +172,33 @@ def test_global_connectivity_form_matches_the_checker_on_two_robots(tmp_path):
 
 
 def test_forms_follow_the_scheduler():
-    from fatline_verify.options import Scheduler
-    from fatline_verify.smt.obligations import forms_for
+    forms = {s: {getattr(t, "form", "") for t in tasks_for(make_model(scheduler=s))} for s in ("ssync", "fsync")}
+    assert (
+        forms["ssync"] == forms["fsync"] == {"one-mover", "two-movers", "closer", "global", "seen", "x-nondecreasing"}
+    )
+    assert "two-movers" not in {getattr(t, "form", "") for t in tasks_for(make_model(scheduler="centralized"))}
+    fsync = [t for t in tasks_for(make_model(scheduler="fsync")) if getattr(t, "form", "") == "one-mover"]
+    assert fsync and all(t.other_name == "o-stays" and t.other for t in fsync)  # o at rest because it stays
 
-    assert forms_for(Scheduler.SSYNC) == ("one-mover", "two-movers")
-    assert forms_for(Scheduler.CENTRALIZED) == ("one-mover",)
-    assert forms_for(Scheduler.FSYNC) == ()
+
+def test_fsync_one_mover_replays_with_every_enabled_robot_moving():
+    model = make_model(scheduler="fsync")
+    result = isolated(
+        prove_spec, model, _spec(model, "no-collision/one-mover-scenario-1.and.o-stays"), timeout=10, out=None
+    )
+    assert result.verdict is Verdict.VIOLATED
+    doc = json.loads(json.dumps(result.witness))
+    check_replay(doc, model)
+
+
+def test_lockstep_l_shaped_paths_are_encoded():
+    from fatline_verify.smt.cases import Arith
+    from fatline_verify.smt.claims import build
+
+    model = make_model(timing="lockstep", path="horizontal-then-vertical")
+    spec = next(t for t in tasks_for(model) if getattr(t, "form", "") == "two-movers")
+    built = build(Arith(None), model, spec)
+    assert built.assertions  # encoded over the reals with a common time t (lattices skip this form)
 
 
 @pytest.mark.parametrize(("scheduler", "movers"), [("centralized", 1), ("fsync", 2)])

@@ -27,8 +27,8 @@ from .common import (
 
 MAX_SLOTS = 8
 MAX_JOBS = 256
-LEMMA_CHOICES = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)
-"""The lemmas ``--lemma`` offers: :data:`fatline_verify.smt.obligations.LEMMAS`, named here without
+LEMMA_CHOICES = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
+"""The lemmas ``--lemma`` offers: :data:`fatline_verify.prover.LEMMAS`, named here without
 importing z3 when the parser is built (a test keeps the two equal)."""
 ALL = "all"
 """``--lemma all``: every lemma the prover decides."""
@@ -36,18 +36,17 @@ ALL = "all"
 
 def cmd_prove(args: argparse.Namespace) -> int:
     from ..proof_results import ProofResults
-    from ..prover import prove, task_key, tasks_for
-    from ..smt.obligations import LEMMAS
+    from ..prover import LEMMAS, prove, task_key, tasks_for
 
     model = model_arg(args.model)
     lemmas = LEMMAS if args.lemma == ALL else (Lemma(args.lemma),)
+    tasks = tasks_for(model, lemmas)  # refuses a scheduler the obligations do not encode, before any work
     root = claim_dir(args.out, name="out")
     out = claim_dir(child(root, model.name), name="out")
     traces_dir = claim_dir(args.traces, name="traces") if args.traces is not None else out / "traces"
     json_path = claim_file(args.json, name="json", kind=Kind.PROVE, force=args.force) if args.json else None
     claim_files([out / "results.json"], name="out", kind=Kind.PROVE, force=args.force)
     store = ProofResults(model, out, traces_dir, slots=args.slots, timeout=args.timeout)
-    tasks = tasks_for(model, lemmas)
     claim_files(store.witness_paths(tasks), name="traces", kind=Kind.TRACE, force=args.force)
 
     interrupted = False
@@ -82,16 +81,17 @@ def cmd_prove(args: argparse.Namespace) -> int:
 
 
 def register(sub: Any) -> None:
-    p = add_command(
-        sub, "prove", "prove or refute the collision and connectivity lemmas per rule with z3, for any swarm size"
-    )
+    p = add_command(sub, "prove", "prove (for any swarm size) or refute each lemma per decision case with z3")
     add_model_argument(p)
     p.add_argument("--lemma", choices=[*(lemma.value for lemma in LEMMA_CHOICES), ALL], default=ALL)
     p.add_argument(
-        "--timeout", type=seconds("timeout"), default=10.0, help="solver seconds per obligation (default 10)"
+        "--timeout", type=seconds("timeout"), default=6.0, help="solver seconds per obligation (default 6)"
     )
     p.add_argument(
-        "--slots", type=integer("slots", 1, MAX_SLOTS), default=3, help="symbolic robots besides r (default 3)"
+        "--slots",
+        type=integer("slots", 1, MAX_SLOTS),
+        default=3,
+        help="robots besides r in the global connectivity form (default 3)",
     )
     p.add_argument(
         "--jobs",

@@ -69,7 +69,7 @@ def register(sub: Any) -> None:
     )
     p.add_argument("--slots", type=integer("slots", 1, MAX_SLOTS), default=3, help="prover slot robots (default 3)")
     p.add_argument(
-        "--timeout", type=seconds("timeout"), default=10.0, help="prover budget per obligation in seconds (default 10)"
+        "--timeout", type=seconds("timeout"), default=6.0, help="prover budget per obligation in seconds (default 6)"
     )
     p.add_argument("--refresh", action="store_true", help="recompute results even when the cached ones are up to date")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress")

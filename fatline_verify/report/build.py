@@ -24,7 +24,7 @@ from ..config import Model, load_model, model_from_mapping, model_to_mapping, sh
 from ..errors import FatlineError
 from ..outputs import TEXT_MARKER, Kind, child, claim_dir, claim_files, is_output, read_json, write_json, write_text
 from ..proof_results import ProofResults
-from ..prover import prove, task_key, tasks_for
+from ..prover import NotEncodedScheduler, prove, task_key, tasks_for
 from ..trace import check_replay, load_trace
 from .data import ModelReport
 from .pages import ASSETS, cross_model_html, cross_model_markdown, model_html, model_markdown
@@ -84,7 +84,10 @@ def cached_prove(model: Model, proofs: Path, slots: int, timeout: float, refresh
     """The model's prover results (``proofs/MODEL/results.json``): up-to-date rows are reused, the
     others recomputed and merged in; rows of other settings or obligations are kept."""
     store = ProofResults(model, proofs, proofs / "traces", slots=slots, timeout=timeout)
-    tasks = tasks_for(model)
+    try:
+        tasks = tasks_for(model)
+    except NotEncodedScheduler as exc:
+        return {**store.document([]), "not_encoded": str(exc)}
     todo = tasks if refresh else [t for t in tasks if store.fresh(t) is None]
     if todo:
         prove(model, slots=slots, timeout=timeout, out=proofs, tasks=todo, on_result=store.add)
@@ -97,7 +100,7 @@ def build_report(
     *,
     proofs: Path = Path("proofs"),
     slots: int = 3,
-    timeout: float = 10.0,
+    timeout: float = 6.0,
     refresh: bool = False,
     force: bool = False,
     progress: Callable[[str], None] | None = None,

@@ -21,8 +21,8 @@ from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, prove_row, viol
 from .data import ModelReport
 
 RANK = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
-PROVER_LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)
-"""The prover's lemmas, in its results order (:data:`fatline_verify.smt.obligations.LEMMAS`, without z3)."""
+PROVER_LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
+"""The prover's lemmas, in its results order (:data:`fatline_verify.prover.LEMMAS`, without z3)."""
 
 VIEWER_JS = """
 document.querySelectorAll('.viewer').forEach(function (v) {
@@ -187,6 +187,8 @@ def _search_rows(report: ModelReport) -> list[list[str]]:
 def _not_encoded(report: ModelReport) -> str:
     """One sentence instead of the prover table when no obligation was run: every row INCONCLUSIVE for
     the same reason (a scheduler the prover does not encode)."""
+    if report.prove.get("not_encoded"):
+        return f"No obligations: {report.prove['not_encoded']}."
     rows = report.prove["obligations"]
     reasons = {r["reason"] for r in rows}
     if not rows or len(reasons) != 1 or any(r["verdict"] != "INCONCLUSIVE" or r["seconds"] for r in rows):
@@ -224,7 +226,7 @@ SEARCH_HEAD = [
     "seconds",
 ]
 CHECK_HEAD = ["lemma", "robots", "verdict", "witness", "detail", "trace"]
-PROVE_HEAD = ["lemma", "form", "rule", "verdict", "slots", "seconds", "detail", "trace"]
+PROVE_HEAD = ["lemma", "form", "case", "verdict", "robots", "seconds", "detail", "trace"]
 
 
 def _trace_text(t: dict[str, Any], style: NumberStyle = SHORT) -> str:

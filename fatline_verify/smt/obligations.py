@@ -1,15 +1,10 @@
-"""Proof obligations: one per lemma form and moving rule, over the reals, written as SMT-LIB2.
+"""Lemma 1 in its global form over symbolic slots (the whole graph after one round), and the old
+slot encoding's shared tools: solving, SMT-LIB2 output, re-checking a written file, and the
+symbolic ``decide`` evaluated on a concrete snapshot (for differential tests).
 
-Forms:
-- ``one-mover``: r (at the origin) fires the rule and moves; a resting robot o comes within 2 of
-  r's path (no-collision), or o was visible before and is not after (connectivity, edge form).
-- ``two-movers``: r fires the rule; a second robot s decides from the same snapshot (its own rule,
-  any moving one) and both move at once; their paths come within 2 under the ``timing`` option
-  (no-collision), or s was visible to r before and is not after (connectivity, edge form).
-
-Every robot present is a non-overlapping disc; the decision of each mover is the symbolic
-``decide`` over the other present robots (:mod:`.symbolic`). Soundness of "any size": see
-:func:`argument`.
+The global form has no witness argument (the lemma is about the whole graph), so ``unsat`` holds
+only for configurations of at most ``k + 1`` robots. The per-case obligations are in
+:mod:`fatline_verify.smt.claims`.
 """
 
 from __future__ import annotations
@@ -23,28 +18,9 @@ import z3
 
 from ..algorithm import Rule
 from ..config import Model
-from ..options import Contact, PathShape, Scheduler, Timing
+from ..options import Contact, Scheduler
 from ..properties import Lemma
-from .symbolic import MOVING, Slot, SymDecision, decide, make_slots, real, sq, view_reach, witness_bound
-
-FORMS = ("one-mover", "two-movers")
-ENCODING_VERSION = 2
-"""Bumped whenever an obligation's meaning changes (part of the cache fingerprint)."""
-
-
-def forms_for(scheduler: Scheduler) -> tuple[str, ...]:
-    """The per-rule forms a scheduler allows: one robot moving alone needs ssync or centralized (the
-    others at rest); two at once needs ssync. Under fsync every enabled robot moves, so only the
-    global form applies."""
-    return {Scheduler.SSYNC: FORMS, Scheduler.CENTRALIZED: ("one-mover",)}.get(scheduler, ())
-
-
-LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)
-"""The lemmas the prover decides, in results order."""
-
-
-class NotEncoded(Exception):
-    """A combination of readings this encoding does not cover (reported as INCONCLUSIVE)."""
+from .symbolic import Slot, decide, make_slots, real, sq, view_reach
 
 
 @dataclass
@@ -84,66 +60,8 @@ class Answer:
 SymPoint = tuple[z3.ArithRef, z3.ArithRef]
 
 
-def _pieces(dec: SymDecision, ox: z3.ArithRef, oy: z3.ArithRef) -> list[tuple[SymPoint, SymPoint]]:
-    start = (ox, oy)
-    end = (ox + dec.dx, oy + dec.dy)
-    if dec.corner is None:
-        return [(start, end)]
-    corner = (ox + dec.corner[0], oy + dec.corner[1])
-    return [(start, corner), (corner, end)]
-
-
-def _at(piece: tuple[SymPoint, SymPoint], t: z3.ArithRef) -> SymPoint:
-    (ax, ay), (bx, by) = piece
-    return ax + t * (bx - ax), ay + t * (by - ay)
-
-
-def _close(model: Model, d2: z3.ArithRef) -> z3.BoolRef:
-    return d2 <= 4 if model.options.contact is Contact.STRICT else d2 < 4
-
-
 def _apart(model: Model, d2: z3.ArithRef) -> z3.BoolRef:
     return d2 > 4 if model.options.contact is Contact.STRICT else d2 >= 4
-
-
-def _param(name: str) -> tuple[z3.ArithRef, list[z3.BoolRef]]:
-    t = z3.Real(name)
-    return t, [t >= 0, t <= 1]
-
-
-def argument(lemma: Lemma, form: str, rule: Rule, k: int, bound: int, any_size: bool) -> str:
-    """The comment that says what an ``unsat`` answer proves, and on what it rests."""
-    what = {
-        (Lemma.NO_COLLISION, "one-mover"): "no robot o at rest comes within distance 2 of r's path",
-        (Lemma.NO_COLLISION, "two-movers"): "no robot s moving in the same round comes within distance 2 of r",
-        (
-            Lemma.CONNECTIVITY,
-            "one-mover",
-        ): "every robot o at rest that r saw before the round is still visible after it",
-        (Lemma.CONNECTIVITY, "two-movers"): "a robot s that moves in the same round stays visible to r",
-    }[(lemma, form)]
-    lines = [
-        f"Obligation: {lemma}, {form}, r's rule {rule.value}.",
-        f"Claim: whenever r fires {rule.value}, {what}.",
-        f"Encoding: r at the origin and {k} slot robots (each may be absent), all non-overlapping discs; "
-        "each mover's decision is the symbolic decide over the other present robots; the negated claim is "
-        "asserted at slot 0.",
-        f"Why unsat is enough: r's decision is fixed by at most {bound} robots besides r (the psi_right robot, "
-        "one robot each for R n B, R n C, R n D, one blocker per blocked search candidate, the top of I); "
-        "every other condition of the rule is universal over the robots r sees (no robot in E u F u G, every "
-        "B u C u D robot at x >= psi, the destination vacant, ...), so it holds in every sub-swarm. Any "
-        "violating swarm, of any size, contains the sub-swarm of r, those witnesses and the violated robot, "
-        "on which decide gives the same decision and the same violation.",
-    ]
-    if any_size:
-        lines.append(f"Here {k} slots >= {bound} + 1, so unsat proves the claim for swarms of every size.")
-    else:
-        lines.append(
-            f"Here {k} slots < {bound} + 1 needed for that argument: unsat proves the claim only for configurations "
-            f"of at most {k + 1} robots."
-        )
-    lines.append("Assumptions: exact real arithmetic; robots are non-overlapping unit discs; one shared snapshot.")
-    return "\n".join(lines)
 
 
 def _connected(pos: list[SymPoint], present: list[z3.BoolRef], reach2: z3.ArithRef) -> z3.BoolRef:
@@ -230,71 +148,6 @@ def initial_condition(model: Model, slots: list[Slot]) -> list[z3.BoolRef]:
         ]
     out += [z3.Implies(a.present, r) for a, r in zip(slots, reached, strict=True)]
     return out
-
-
-def build(model: Model, lemma: Lemma, form: str, rule: Rule, k: int, initial: bool = False) -> Obligation:
-    """The obligation that ``rule`` breaks ``lemma`` in the given form, with ``k`` slot robots."""
-    if lemma not in LEMMAS or form not in FORMS:
-        raise ValueError(f"unknown obligation {lemma}/{form}")
-    slots = make_slots(k)
-    origin = (real(0), real(0))
-    asserts: list[z3.BoolRef] = []
-    # every present robot is a disc that does not overlap another, nor r
-    for i, a in enumerate(slots):
-        asserts.append(z3.Implies(a.present, _apart(model, sq(a.x) + sq(a.y))))
-        for b in slots[i + 1 :]:
-            asserts.append(z3.Implies(z3.And(a.present, b.present), _apart(model, sq(a.x - b.x) + sq(a.y - b.y))))
-    dec = decide(slots, model, "r")
-    asserts += dec.side
-    asserts += [dec.is_rule(rule), dec.moves]
-    o = slots[0]
-    asserts.append(o.present)
-    reach2 = real(view_reach(model) ** 2)
-    if form == "one-mover":
-        if lemma == Lemma.NO_COLLISION:
-            hits = []
-            for j, piece in enumerate(_pieces(dec, *origin)):
-                t, bounds = _param(f"t{j}")
-                px, py = _at(piece, t)
-                hits.append(z3.And(*bounds, _close(model, sq(px - o.x) + sq(py - o.y))))
-            asserts.append(z3.Or(*hits))
-        else:
-            asserts += [sq(o.x) + sq(o.y) <= reach2, sq(o.x - dec.dx) + sq(o.y - dec.dy) > reach2]
-    else:
-        # s = slot 0 decides from the same snapshot: r and the other slots, relative to s
-        others = [Slot(-o.x, -o.y, z3.BoolVal(True))] + [c.minus(o.x, o.y) for c in slots[1:]]
-        dec_s = decide(others, model, "s")
-        asserts += dec_s.side
-        asserts += [z3.Or(*[dec_s.is_rule(r) for r in MOVING]), dec_s.moves]
-        if lemma == Lemma.NO_COLLISION:
-            asserts.append(_two_movers_close(model, dec, dec_s, o))
-        else:
-            ex, ey = o.x + dec_s.dx, o.y + dec_s.dy
-            asserts += [sq(o.x) + sq(o.y) <= reach2, sq(ex - dec.dx) + sq(ey - dec.dy) > reach2]
-    if initial:
-        asserts += initial_condition(model, slots)
-    bound = witness_bound(rule, model) + (max(witness_bound(r, model) for r in MOVING) if form == "two-movers" else 0)
-    any_size = k >= bound + 1
-    return Obligation(lemma, form, rule, k, any_size, argument(lemma, form, rule, k, bound, any_size), asserts, slots)
-
-
-def _two_movers_close(model: Model, dec: SymDecision, dec_s: SymDecision, s: Slot) -> z3.BoolRef:
-    mine = _pieces(dec, real(0), real(0))
-    theirs = _pieces(dec_s, s.x, s.y)
-    if model.options.timing is Timing.ANY_SPEED:
-        hits = []
-        for a, pa in enumerate(mine):
-            for b, pb in enumerate(theirs):
-                t, bt = _param(f"t{a}{b}")
-                u, bu = _param(f"u{a}{b}")
-                (x1, y1), (x2, y2) = _at(pa, t), _at(pb, u)
-                hits.append(z3.And(*bt, *bu, _close(model, sq(x1 - x2) + sq(y1 - y2))))
-        return z3.Or(*hits)
-    if model.options.path is not PathShape.STRAIGHT:
-        raise NotEncoded("timing=lockstep with L-shaped paths is not encoded (piecewise timelines)")
-    t, bt = _param("t")
-    (x1, y1), (x2, y2) = _at(mine[0], t), _at(theirs[0], t)
-    return z3.And(*bt, _close(model, sq(x1 - x2) + sq(y1 - y2)))
 
 
 def smt2(ob: Obligation) -> str:

@@ -1,0 +1,113 @@
+"""Ask z3 about a :class:`~fatline_verify.smt.claims.Built` obligation; decode its answer exactly.
+
+The budget is z3's deterministic resource limit (``rlimit``), so an answer does not depend on the
+machine's load; the wall clock stops a check at 1.5 times the budget (nlsat does not always count resources).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from fractions import Fraction
+from pathlib import Path
+
+import z3
+
+from .claims import Built
+
+RLIMIT_PER_SECOND = 2_000_000
+"""z3 resource units per second of budget. Measured here: 1 to 4 million units a second depending
+on the obligation, so the deterministic limit normally stops a check before the clock does."""
+
+Positions = dict[str, tuple[Fraction, Fraction]]
+
+
+@dataclass
+class Answer:
+    """The solver's answer: ``sat`` (with every named robot's centre, radii, relative to r),
+    ``unsat`` or ``unknown`` (with z3's reason)."""
+
+    status: str
+    seconds: float
+    reason: str = ""
+    positions: Positions = field(default_factory=dict)
+    rounded: bool = False
+
+
+def _fraction(value: z3.ExprRef, q: int | None) -> tuple[Fraction, bool]:
+    if z3.is_int_value(value):
+        return Fraction(value.as_long(), q or 1), False
+    if z3.is_rational_value(value):
+        return Fraction(value.numerator_as_long(), value.denominator_as_long()), False
+    if z3.is_algebraic_value(value):
+        approx = value.approx(40)
+        return Fraction(approx.numerator_as_long(), approx.denominator_as_long()), True
+    raise ValueError(f"unexpected model value {value}")
+
+
+def rlimit(seconds: float) -> int:
+    return max(1, int(RLIMIT_PER_SECOND * seconds))
+
+
+def solver_for(built: Built, seconds: float) -> z3.Solver:
+    """A solver holding the obligation (and its lattice bounds), with a budget of ``seconds``."""
+    solver = z3.Solver(ctx=built.ar.ctx)
+    solver.set("rlimit", rlimit(seconds))
+    solver.set("timeout", int(1.5 * seconds * 1000))
+    solver.add(*built.assertions, *built.bounds)
+    return solver
+
+
+def check(solver: z3.Solver, built: Built, seconds: float) -> Answer:
+    """One ``check``; for sat, every named robot's centre as an exact fraction of a radius
+    (algebraic values rounded to 40 digits and flagged: the replay decides whether they still work)."""
+    t0 = time.perf_counter()
+    res = solver.check()
+    spent = time.perf_counter() - t0
+    if res == z3.unsat:
+        return Answer("unsat", spent)
+    if res == z3.unknown:
+        reason = solver.reason_unknown()
+        if any(word in reason for word in ("resource", "timeout", "canceled")):
+            reason = f"budget exhausted (rlimit {rlimit(seconds):,}, about {seconds:g} s)"
+        return Answer("unknown", spent, reason)
+    m = solver.model()
+    positions: Positions = {}
+    rounded = False
+    for name, (x, y) in built.bodies.items():
+        fx, rx = _fraction(m.eval(x, model_completion=True), built.ar.q)
+        fy, ry = _fraction(m.eval(y, model_completion=True), built.ar.q)
+        positions[name] = (fx, fy)
+        rounded = rounded or rx or ry
+    return Answer("sat", spent, positions=positions, rounded=rounded)
+
+
+def block(solver: z3.Solver, built: Built, positions: Positions) -> None:
+    """Exclude exactly this placement of the named robots (lattice searches go on past it)."""
+    q = built.ar.q or 1
+    terms = []
+    for name, (x, y) in built.bodies.items():
+        fx, fy = positions[name]
+        terms += [x != int(fx * q), y != int(fy * q)]
+    solver.add(z3.Or(*terms))
+
+
+def smt2(built: Built) -> str:
+    """The obligation as a plain SMT-LIB2 script (its argument as a comment header)."""
+    solver = z3.Solver(ctx=built.ar.ctx)
+    solver.add(*built.assertions, *built.bounds)
+    header = "\n".join(f"; {line}" if line else ";" for line in built.comment.splitlines())
+    logic = "QF_NIA" if built.ar.lattice else "QF_NRA"
+    return f"{header}\n(set-logic {logic})\n{solver.sexpr()}(check-sat)\n"
+
+
+def write(built: Built, path: Path) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(smt2(built), encoding="utf-8")
+
+
+def solver_version() -> str:
+    return f"z3 {z3.get_version_string()}"
+
+
+__all__ = ["Answer", "Positions", "block", "check", "smt2", "solver_for", "write"]
