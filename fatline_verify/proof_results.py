@@ -14,7 +14,7 @@ from typing import Any
 
 from .config import Model
 from .outputs import Kind, child, is_output, read_json, write_json
-from .prover import ProofResult, Task, prove_fingerprint, task_key, tasks_for
+from .prover import NotEncodedScheduler, ProofResult, Task, prove_fingerprint, task_key, tasks_for
 from .smt.solving import solver_version
 from .trace import write_trace
 
@@ -84,7 +84,10 @@ class ProofResults:
 
     def ordered(self, keys: list[str] | None = None) -> list[dict[str, Any]]:
         """The rows of ``keys`` (default: every row), the model's own obligations first, in task order."""
-        order = [task_key(t) for t in tasks_for(self.model)]
+        try:
+            order = [task_key(t) for t in tasks_for(self.model, two_movers=True)]
+        except NotEncodedScheduler:
+            order = []
         wanted = list(self.rows) if keys is None else keys
         rank = {k: i for i, k in enumerate(order)}
         return [self.rows[k] for k in sorted(wanted, key=lambda k: rank.get(k, len(order))) if k in self.rows]

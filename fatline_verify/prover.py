@@ -8,14 +8,15 @@ three steps, each with its own z3 context and deterministic budget:
 
 1. **Vacuity**: if "r makes this case's decision" has no solution over the reals, the case never
    fires under the model's readings: PROVED, "the case never fires".
-2. **Lattices first**: the named robots on the lattices ``x = X / q`` (q = 1, 2, 4, 20; integer
+2. **Lattices first**: the named robots on the lattices ``x = X / q`` (q = 1, 2, 4; integer
    arithmetic) with the paper's initial condition on them. A solution is replayed by the executable
    model: if r decides the same case, the claim fails and the configuration is initial, VIOLATED. A
    placement that does not replay as initial is blocked and the search goes on.
 3. **The reals** (not for two movers: their group obligations are beyond any budget tried), without
-   the initial condition: ``unsat`` is PROVED (every size, by the header's
-   argument); ``sat`` is replayed, VIOLATED if the configuration is initial, otherwise INCONCLUSIVE
-   with the configuration and what would decide it; ``unknown`` is INCONCLUSIVE with the budget.
+   the initial condition: ``unsat`` is PROVED (every size, by the header's argument); ``sat`` is
+   replayed, VIOLATED if the configuration is initial; otherwise the reals are searched once more
+   with the initial condition, and without an initial solution the verdict is INCONCLUSIVE with the
+   configuration and what would decide it; ``unknown`` is INCONCLUSIVE with the budget.
 
 A replay that disagrees with the encoding (r decides another case, or the claim holds) is a bug of
 the tool and reported as "encoding disagreement". The global form of Lemma 1 (the whole graph)
@@ -51,11 +52,14 @@ from .trace import replayed_document
 ENCODED = (Scheduler.SSYNC, Scheduler.FSYNC, Scheduler.CENTRALIZED)
 """The schedulers the obligations encode: every mover decides on one shared snapshot."""
 
-LATTICES = (1, 2, 4, 20)
+LATTICES = (1, 2, 4)
 """The lattices ``x = X / q`` searched for an initial counterexample before the reals."""
 
-SHARE = {"vacuity": 0.05, "lattice": 0.08, "reals": 0.5}
-"""Each step's share of the per-obligation budget (each lattice gets ``lattice``)."""
+SHARE = {"vacuity": 0.05, "reals": 0.4, "reals-initial": 0.2}
+"""Each step's share of the per-obligation budget (the lattices: :data:`LATTICE_SHARE`)."""
+
+LATTICE_SHARE = {1: 0.15, 2: 0.1, 4: 0.05}
+"""Each lattice's share of the budget: the coarsest, where most counterexamples lie, gets the most."""
 
 MAX_BLOCKED = 4
 """Non-initial lattice placements blocked per lattice before moving on."""
@@ -95,6 +99,11 @@ class ProofResult:
 
 # --- which obligations a model has ----------------------------------------------------------------
 
+DEFAULT_SLOTS = 3
+"""Slot robots of the global connectivity form, unless asked otherwise."""
+DEFAULT_TIMEOUT = 4.0
+"""Solver seconds per obligation, unless asked otherwise."""
+
 LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
 """The lemmas the prover decides, in results order."""
 
@@ -133,13 +142,16 @@ def check_encoded(model: Model) -> None:
         )
 
 
-def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS) -> list[Task]:
-    """Every obligation ``prove`` decides for ``model`` and ``lemmas``, in results order."""
+def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: bool = False) -> list[Task]:
+    """Every obligation ``prove`` decides for ``model`` and ``lemmas``, in results order.
+
+    ``two_movers``: also the two-mover obligations (one per pair of rules; searched on the lattices
+    only, as their real form is beyond the budgets tried), which ``fatline prove --two-movers`` asks for."""
     check_encoded(model)
     scheduler = model.options.scheduler
     moving = moving_cases(model)
     stays = tuple(staying_cases(model)) if scheduler is Scheduler.FSYNC else ()
-    groups = rule_groups(moving) if scheduler is not Scheduler.CENTRALIZED else []
+    groups = rule_groups(moving) if two_movers and scheduler is not Scheduler.CENTRALIZED else []
     tasks: list[Task] = []
     for lemma in lemmas:
         if lemma in (Lemma.NO_COLLISION, Lemma.CONNECTIVITY):
@@ -218,8 +230,7 @@ def replay(model: Model, spec: Spec, positions: dict[str, tuple[Fraction, Fracti
         return f"the second robot decides {other.name}, not one of {spec.other_name}"
     if form == ONE_MOVER and fsync and other not in spec.other:
         return f"the robot at rest decides {other.name}, and moves"
-    movers = [i for i, d in decisions.items() if d.moves]
-    active = movers if fsync else [0, j] if form == TWO_MOVERS else [0]
+    active = list(range(len(state))) if fsync else [0, j] if form == TWO_MOVERS else [0]
     if round_scheduler(model.options.scheduler).forbids(tuple(active), len(state)) is not None:
         return f"activation {active} is not a round of the scheduler"
     result = play_round(state, active, model, decisions)
@@ -298,7 +309,7 @@ def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) ->
             lat = build(Arith(q), model, spec, initial=True)
         except (ValueError, NotEncoded):
             continue  # a constant off this lattice, or a form searched over the reals only
-        seconds = timeout * SHARE["lattice"]
+        seconds = timeout * LATTICE_SHARE[q]
         solver = solver_for(lat, seconds)
         for _ in range(MAX_BLOCKED):
             ans = check(solver, lat, seconds)
@@ -330,15 +341,38 @@ def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) ->
             "rerun with a larger --timeout",
         )
     got = replay(model, spec, ans.positions, full.focus)
+    if isinstance(got, str) and ans.rounded:
+        return result(
+            Verdict.INCONCLUSIVE,
+            f"the solver's counterexample has irrational coordinates and its rational rounding does not reproduce "
+            f"({got}): a boundary case exact rational replay cannot confirm; no initial counterexample on the "
+            f"lattices q={', '.join(map(str, LATTICES))}",
+        )
     if isinstance(got, str):
         return result(Verdict.INCONCLUSIVE, f"encoding disagreement (reals): {got}")
     rounded = "; values rounded from algebraic numbers and re-checked" if ans.rounded else ""
     if got.initial:
         return result(Verdict.VIOLATED, _found(got, "reals") + rounded, got)
+    seconds = timeout * SHARE["reals-initial"]  # a violation exists: look for an initial one on the reals
+    again = build(Arith(None), model, spec, initial=True)
+    more = check(solver_for(again, seconds), again, seconds)
+    spent += more.seconds
+    if more.status == "sat":
+        found = replay(model, spec, more.positions, again.focus)
+        if isinstance(found, str):
+            return result(Verdict.INCONCLUSIVE, f"encoding disagreement (reals, initial): {found}")
+        if found.initial:
+            rounded = "; values rounded from algebraic numbers and re-checked" if more.rounded else ""
+            return result(Verdict.VIOLATED, _found(found, "reals") + rounded, found)
+    initial_too = (
+        "none from an initial configuration over the reals"
+        if more.status == "unsat"
+        else f"no initial one on the lattices q={', '.join(map(str, LATTICES))} or the reals within the budget"
+    )
     return result(
         Verdict.INCONCLUSIVE,
         f"{got.what} in a configuration of {len(got.state)} robots that is not initial ({got.problems[0]}); "
-        f"no initial one on the lattices q={', '.join(map(str, LATTICES))} within the budget; whether it is "
+        f"{initial_too}; whether it is "
         "reachable is not decided: rerun with a larger --timeout, or check the configuration's swarm size with "
         "fatline check",
         got,
@@ -437,8 +471,8 @@ def prove(
     model: Model,
     lemmas: tuple[Lemma, ...] = LEMMAS,
     *,
-    slots: int = 3,
-    timeout: float = 6.0,
+    slots: int = DEFAULT_SLOTS,
+    timeout: float = DEFAULT_TIMEOUT,
     out: Path | None = None,
     jobs: int | None = None,
     progress: Callable[[str], None] | None = None,
@@ -482,7 +516,7 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-ENCODING_VERSION = 3
+ENCODING_VERSION = 4
 """Bumped whenever an obligation's meaning changes (part of the cache fingerprint). 3: role-assigned
 obligations per decision case."""
 

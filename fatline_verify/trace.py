@@ -286,6 +286,11 @@ def _positions(doc_points: list[list[Any]], model: Model, where: str) -> State:
     return tuple(out)
 
 
+def initial_positions(doc: dict[str, Any], model: Model) -> State:
+    """A trace's initial positions in ``model``'s lattice units."""
+    return _positions(doc["initial"], model, "initial")
+
+
 def replay(doc: dict[str, Any], model: Model | None = None) -> Run:
     """Recompute a trace's run from its initial positions and actions (under ``model``, by default the
     trace's own), with the model's transition system. Every recorded step is replayed, also past a goal
@@ -293,7 +298,7 @@ def replay(doc: dict[str, Any], model: Model | None = None) -> Run:
     is judged at the end, and for a lasso (``loop_start``) the loop is checked to close, fairly."""
     model = model or trace_model(doc)
     system = system_for(model)
-    initial = _positions(doc["initial"], model, "initial")
+    initial = initial_positions(doc, model)
     loop_start = doc.get("loop_start")
     n = len(initial)
     state = system.start(initial)

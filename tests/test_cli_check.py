@@ -84,7 +84,10 @@ def test_help_states_exit_codes(capsys):
     [
         (["--timeout", "0"], "timeout='0': expected a positive, finite number"),
         (["--slots", "0"], "slots='0': expected a whole number"),
-        (["--lemma", "happiness"], "lemma='happiness': expected one of no-collision, connectivity, all"),
+        (
+            ["--lemma", "happiness"],
+            "lemma='happiness': expected one of no-collision, connectivity, rma-fixed, approach, all",
+        ),
     ],
 )
 def test_prove_bad_input(capsys, tmp_path, args, fragment):

@@ -6,6 +6,8 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
+from fatline_verify import prover
+from fatline_verify.cli import prove as cli_prove
 from fatline_verify.cli.prove import LEMMA_CHOICES
 from fatline_verify.properties import CHECKED, FLAG, SAFETY, SPECS, Judged, Lemma
 from fatline_verify.prover import LEMMAS
@@ -100,3 +102,8 @@ def test_prover_lemmas_named_alike():
     """The CLI's ``--lemma`` choices and the report's prover columns name the obligations' lemmas
     (they cannot import them: that would load z3)."""
     assert LEMMA_CHOICES == LEMMAS == PROVER_LEMMAS
+
+
+def test_prover_defaults_named_alike():
+    """The CLI's prover defaults (named without importing z3) are the prover's."""
+    assert (cli_prove.DEFAULT_SLOTS, cli_prove.DEFAULT_TIMEOUT) == (prover.DEFAULT_SLOTS, prover.DEFAULT_TIMEOUT)

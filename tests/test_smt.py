@@ -72,7 +72,7 @@ def _cvc5(path):
 def test_a_proved_obligation_stays_unsat_from_its_file_for_both_solvers(tmp_path):
     # No rule moves r right of every robot it sees, in Scenario 1, for swarms of any size.
     model = make_model()
-    result = isolated(prove_spec, model, _spec(model, "rma-fixed/seen-scenario-1"), timeout=10, out=tmp_path)
+    result = isolated(prove_spec, model, _spec(model, "rma-fixed/seen-scenario-1"), timeout=20, out=tmp_path)
     assert result.verdict is Verdict.PROVED and result.any_size
     path = tmp_path / "rma-fixed" / "seen-scenario-1.smt2"
     assert "Why unsat covers swarms of every size" in path.read_text()
@@ -83,7 +83,7 @@ def test_a_proved_obligation_stays_unsat_from_its_file_for_both_solvers(tmp_path
 def test_the_paper_s_hidden_robot_scenario_1_collision_is_found_and_replays():
     # r moves to the foot of psi_right; a robot r cannot see ends closer than 2 to r's destination.
     model = make_model()
-    result = isolated(prove_spec, model, _spec(model, "no-collision/one-mover-scenario-1"), timeout=10, out=None)
+    result = isolated(prove_spec, model, _spec(model, "no-collision/one-mover-scenario-1"), timeout=20, out=None)
     assert result.verdict is Verdict.VIOLATED
     doc = json.loads(json.dumps(result.witness))
     check_replay(doc, model)
@@ -95,7 +95,7 @@ def test_the_paper_s_scenario_4_drop_collides_and_the_witness_replays():
     # "y_p = 0 - d + 1": r stops one radius above the top robot of I. A defect of the paper itself.
     model = make_model()
     key = "no-collision/one-mover-scenario-4-I-nonempty.from-uncovered-neither"
-    result = isolated(prove_spec, model, _spec(model, key), timeout=10, out=None)
+    result = isolated(prove_spec, model, _spec(model, key), timeout=20, out=None)
     assert result.verdict is Verdict.VIOLATED
     doc = json.loads(json.dumps(result.witness))
     check_replay(doc, model)
@@ -119,7 +119,7 @@ def test_literal_quadrants_never_fire_scenario_3():
     model = make_model(quadrants="literal")
     for task in tasks_for(model):
         if getattr(task, "form", "") == "seen" and task.mine[0].rule.value == "scenario-3":
-            result = isolated(prove_spec, model, task, timeout=10, out=None)
+            result = isolated(prove_spec, model, task, timeout=20, out=None)
             assert result.verdict is Verdict.PROVED and "never fires" in result.reason
             break
     else:
@@ -131,7 +131,7 @@ def test_seeded_unsafe_reading_is_refuted_with_a_replayed_trace():
     # touching the top robot of I. The prover must find that, from an initial configuration.
     model = make_model(contact="strict", scenario4_drop="touch")
     key = "no-collision/one-mover-scenario-4-I-nonempty.from-uncovered-neither"
-    result = isolated(prove_spec, model, _spec(model, key), timeout=10, out=None)
+    result = isolated(prove_spec, model, _spec(model, key), timeout=20, out=None)
     assert result.verdict is Verdict.VIOLATED
     doc = json.loads(json.dumps(result.witness))
     check_replay(doc, model)
@@ -144,7 +144,7 @@ def test_a_claim_counterexample_is_a_configuration_decide_replays():
     from fatline_verify.cases import case_of
 
     model = make_model()
-    result = isolated(prove_spec, model, _spec(model, "connectivity/closer-scenario-2.down-1"), timeout=10, out=None)
+    result = isolated(prove_spec, model, _spec(model, "connectivity/closer-scenario-2.down-1"), timeout=20, out=None)
     assert result.verdict is Verdict.VIOLATED
     state = [tuple(Fr(v) for v in p.split(",")) for p in result.configuration]
     assert state[0] == (0, 0)
@@ -162,21 +162,26 @@ def test_global_connectivity_form_matches_the_checker_on_two_robots(tmp_path):
     # literal ones; the global obligation over the reals agrees.
     from fatline_verify.config import load_model
 
-    broken = isolated(prove_global, load_model("paper"), slots=1, timeout=10, out=tmp_path)
+    broken = isolated(prove_global, load_model("paper"), slots=1, timeout=20, out=tmp_path)
     assert broken.verdict is Verdict.VIOLATED
     check_replay(json.loads(json.dumps(broken.witness)), load_model("paper"))
     assert broken.witness["violation"]["property"] == "connectivity"
-    kept = isolated(prove_global, load_model("paper-literal"), slots=1, timeout=10, out=None)
+    kept = isolated(prove_global, load_model("paper-literal"), slots=1, timeout=20, out=None)
     assert kept.verdict is Verdict.HOLDS_WITHIN_BOUNDS
     assert recheck_file(tmp_path / "connectivity" / "global.smt2") == "sat"
 
 
 def test_forms_follow_the_scheduler():
-    forms = {s: {getattr(t, "form", "") for t in tasks_for(make_model(scheduler=s))} for s in ("ssync", "fsync")}
+    forms = {
+        s: {getattr(t, "form", "") for t in tasks_for(make_model(scheduler=s), two_movers=True)}
+        for s in ("ssync", "fsync")
+    }
     assert (
         forms["ssync"] == forms["fsync"] == {"one-mover", "two-movers", "closer", "global", "seen", "x-nondecreasing"}
     )
-    assert "two-movers" not in {getattr(t, "form", "") for t in tasks_for(make_model(scheduler="centralized"))}
+    assert "two-movers" not in {getattr(t, "form", "") for t in tasks_for(make_model(), two_movers=False)}
+    central = tasks_for(make_model(scheduler="centralized"), two_movers=True)
+    assert "two-movers" not in {getattr(t, "form", "") for t in central}
     fsync = [t for t in tasks_for(make_model(scheduler="fsync")) if getattr(t, "form", "") == "one-mover"]
     assert fsync and all(t.other_name == "o-stays" and t.other for t in fsync)  # o at rest because it stays
 
@@ -196,7 +201,7 @@ def test_lockstep_l_shaped_paths_are_encoded():
     from fatline_verify.smt.claims import build
 
     model = make_model(timing="lockstep", path="horizontal-then-vertical")
-    spec = next(t for t in tasks_for(model) if getattr(t, "form", "") == "two-movers")
+    spec = next(t for t in tasks_for(model, two_movers=True) if getattr(t, "form", "") == "two-movers")
     built = build(Arith(None), model, spec)
     assert built.assertions  # encoded over the reals with a common time t (lattices skip this form)
 
@@ -204,7 +209,27 @@ def test_lockstep_l_shaped_paths_are_encoded():
 @pytest.mark.parametrize(("scheduler", "movers"), [("centralized", 1), ("fsync", 2)])
 def test_global_form_activates_what_the_scheduler_allows(scheduler, movers):
     model = make_model(scheduler=scheduler)
-    result = isolated(prove_global, model, slots=1, timeout=10, out=None)
+    result = isolated(prove_global, model, slots=1, timeout=20, out=None)
     assert result.verdict is Verdict.VIOLATED
     assert len(result.witness["rounds"][0]["active"]) == movers
     check_replay(json.loads(json.dumps(result.witness)), model)
+
+
+def _proved_files():
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    out = []
+    for results in sorted((root / "proofs").glob("*/results.json")):
+        for row in json.loads(results.read_text())["obligations"]:
+            if row["verdict"] == "PROVED" and row.get("smt2"):
+                out.append(root / row["smt2"])
+    return out
+
+
+def test_cvc5_rechecks_every_proved_obligation_from_its_file():
+    """Every committed PROVED obligation is unsat for a second solver, from the written file alone."""
+    files = _proved_files()
+    assert files
+    answers = {str(path): _cvc5(path) for path in files}
+    assert {a for a in answers.values()} == {"unsat"}, [p for p, a in answers.items() if a != "unsat"][:5]

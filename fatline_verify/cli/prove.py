@@ -30,6 +30,9 @@ MAX_JOBS = 256
 LEMMA_CHOICES = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
 """The lemmas ``--lemma`` offers: :data:`fatline_verify.prover.LEMMAS`, named here without
 importing z3 when the parser is built (a test keeps the two equal)."""
+DEFAULT_SLOTS, DEFAULT_TIMEOUT = 3, 4.0
+"""The prover's defaults (:data:`fatline_verify.prover.DEFAULT_SLOTS`, ``DEFAULT_TIMEOUT``), named here
+without importing z3 (a test keeps them equal)."""
 ALL = "all"
 """``--lemma all``: every lemma the prover decides."""
 
@@ -40,7 +43,9 @@ def cmd_prove(args: argparse.Namespace) -> int:
 
     model = model_arg(args.model)
     lemmas = LEMMAS if args.lemma == ALL else (Lemma(args.lemma),)
-    tasks = tasks_for(model, lemmas)  # refuses a scheduler the obligations do not encode, before any work
+    tasks = tasks_for(
+        model, lemmas, two_movers=args.two_movers
+    )  # refuses a scheduler the obligations do not encode, before any work
     root = claim_dir(args.out, name="out")
     out = claim_dir(child(root, model.name), name="out")
     traces_dir = claim_dir(args.traces, name="traces") if args.traces is not None else out / "traces"
@@ -85,12 +90,12 @@ def register(sub: Any) -> None:
     add_model_argument(p)
     p.add_argument("--lemma", choices=[*(lemma.value for lemma in LEMMA_CHOICES), ALL], default=ALL)
     p.add_argument(
-        "--timeout", type=seconds("timeout"), default=6.0, help="solver seconds per obligation (default 6)"
+        "--timeout", type=seconds("timeout"), default=DEFAULT_TIMEOUT, help="solver seconds per obligation (default 4)"
     )
     p.add_argument(
         "--slots",
         type=integer("slots", 1, MAX_SLOTS),
-        default=3,
+        default=DEFAULT_SLOTS,
         help="robots besides r in the global connectivity form (default 3)",
     )
     p.add_argument(
@@ -112,6 +117,11 @@ def register(sub: Any) -> None:
     )
     p.add_argument(
         "--json", type=nonempty("json", "a file name for the JSON results"), help="also write the results as JSON"
+    )
+    p.add_argument(
+        "--two-movers",
+        action="store_true",
+        help="also the two-mover obligations (a pair of rules each, lattice searches only)",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="no progress")
     add_force(p)

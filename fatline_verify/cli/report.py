@@ -10,7 +10,7 @@ from ..config import shipped_models
 from ..errors import InvalidInput
 from ..progress import Progress
 from .common import EXIT_OK, add_command, add_force, emit, integer, model_arg, nonempty, seconds
-from .prove import MAX_SLOTS
+from .prove import DEFAULT_SLOTS, DEFAULT_TIMEOUT, MAX_SLOTS
 
 STEPS = ("check", "prove", "pictures")
 
@@ -67,9 +67,14 @@ def register(sub: Any) -> None:
         type=nonempty("proofs", "a directory for prover artefacts"),
         help="prover artefacts directory (default: proofs)",
     )
-    p.add_argument("--slots", type=integer("slots", 1, MAX_SLOTS), default=3, help="prover slot robots (default 3)")
     p.add_argument(
-        "--timeout", type=seconds("timeout"), default=6.0, help="prover budget per obligation in seconds (default 6)"
+        "--slots", type=integer("slots", 1, MAX_SLOTS), default=DEFAULT_SLOTS, help="prover slot robots (default 3)"
+    )
+    p.add_argument(
+        "--timeout",
+        type=seconds("timeout"),
+        default=DEFAULT_TIMEOUT,
+        help="prover budget per obligation in seconds (default 4)",
     )
     p.add_argument("--refresh", action="store_true", help="recompute results even when the cached ones are up to date")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress")

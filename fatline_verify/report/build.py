@@ -24,7 +24,7 @@ from ..config import Model, load_model, model_from_mapping, model_to_mapping, sh
 from ..errors import FatlineError
 from ..outputs import TEXT_MARKER, Kind, child, claim_dir, claim_files, is_output, read_json, write_json, write_text
 from ..proof_results import ProofResults
-from ..prover import NotEncodedScheduler, prove, task_key, tasks_for
+from ..prover import DEFAULT_SLOTS, DEFAULT_TIMEOUT, NotEncodedScheduler, prove, task_key, tasks_for
 from ..trace import check_replay, load_trace
 from .data import ModelReport
 from .pages import ASSETS, cross_model_html, cross_model_markdown, model_html, model_markdown
@@ -99,8 +99,8 @@ def build_report(
     out: Path,
     *,
     proofs: Path = Path("proofs"),
-    slots: int = 3,
-    timeout: float = 6.0,
+    slots: int = DEFAULT_SLOTS,
+    timeout: float = DEFAULT_TIMEOUT,
     refresh: bool = False,
     force: bool = False,
     progress: Callable[[str], None] | None = None,
@@ -138,18 +138,34 @@ def _earlier(models: list[Model], out: Path, proofs: Path) -> list[ModelReport]:
     found = []
     for cache in sorted(out.glob("*/check.json")):
         name = cache.parent.name
-        prove_path = proofs / name / "results.json"
-        if name in asked or not is_output(cache, Kind.CHECK) or not is_output(prove_path, Kind.PROVE):
+        if name in asked or not is_output(cache, Kind.CHECK):
             continue
-        check_data, prove_data = read_json(cache), read_json(prove_path)
-        assert check_data is not None and prove_data is not None
+        check_data = read_json(cache)
+        assert check_data is not None
         try:
             model = _model_of(check_data["model"])
+            prove_data = _saved_prove(model, proofs / name)
+            if prove_data is None:
+                continue
             traces = _collect(model, out, check_data, prove_data, draw=False)
         except (FatlineError, KeyError, OSError):
             continue  # an unreadable earlier report is left as it is, not shown in the matrix
         found.append(ModelReport(model, check_data, prove_data, traces))
     return found
+
+
+def _saved_prove(model: Model, proofs: Path) -> dict[str, Any] | None:
+    """An earlier model's saved prover results; for a scheduler the prover refuses, the refusal (there
+    is nothing to save); ``None`` if neither."""
+    path = proofs / "results.json"
+    if is_output(path, Kind.PROVE):
+        return read_json(path)
+    try:
+        tasks_for(model)
+    except NotEncodedScheduler as exc:
+        store = ProofResults(model, proofs, proofs / "traces", slots=DEFAULT_SLOTS, timeout=DEFAULT_TIMEOUT)
+        return {**store.document([]), "not_encoded": str(exc)}
+    return None
 
 
 def _model_of(mapping: dict[str, Any]) -> Model:

@@ -45,14 +45,15 @@ document.querySelectorAll('.viewer').forEach(function (v) {
 
 CSS = """
 body { font-family: system-ui, sans-serif; max-width: 1100px; margin: 2em auto; padding: 0 1em; color: #222; }
+body.wide { max-width: 1340px; }
 table { border-collapse: collapse; margin: 1em 0; font-size: 0.9em; }
 th, td { border: 1px solid #ccc; padding: 0.3em 0.6em; text-align: left; vertical-align: top; }
 th { background: #f3f3f3; }
 .VIOLATED { background: #fde0e0; } .HOLDS_WITHIN_BOUNDS { background: #e3f4e3; }
 .PROVED { background: #c8ecc8; } .INCONCLUSIVE { background: #fff4d6; }
-table.matrix { width: 100%; font-size: 0.85em; }
+table.matrix { width: 100%; font-size: 0.8em; }
 .matrix th { font-weight: 600; }
-.matrix th, .matrix td { padding: 0.3em 0.45em; }
+.matrix th, .matrix td { padding: 0.3em 0.35em; }
 .matrix th.group { text-align: center; }
 .matrix td.readings { min-width: 10em; max-width: 14em; }
 .matrix td.readings code { font-size: 0.95em; }
@@ -310,10 +311,12 @@ ASSETS = {"viewer.js": VIEWER_JS.lstrip(), "style.css": CSS.lstrip()}
 """Written once at the report root; every page links them (relative paths work from the file system)."""
 
 
-def _page(title: str, body: str, root: str) -> str:
+def _page(title: str, body: str, root: str, wide: bool = False) -> str:
+    """A page; ``wide``: the body may take 1340 px (the matrix has a column per lemma and tool)."""
+    klass = ' class="wide"' if wide else ""
     return (
         f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>'
-        f'<link rel="stylesheet" href="{root}style.css"></head><body>\n{body}\n'
+        f'<link rel="stylesheet" href="{root}style.css"></head><body{klass}>\n{body}\n'
         f'<script src="{root}viewer.js"></script></body></html>\n'
     )
 
@@ -480,4 +483,4 @@ def cross_model_html(reports: list[ModelReport]) -> str:
         f"<h1>fatline-verify reports</h1><p>{intro}</p>{_matrix_html(reports)}{docs}"
         f"<h2>A counterexample per model</h2>{cards}"
     )
-    return _page("fatline-verify reports", body, "")
+    return _page("fatline-verify reports", body, "", wide=True)
