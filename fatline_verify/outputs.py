@@ -39,6 +39,7 @@ class Kind(StrEnum):
     TRACE = "fatline-trace"
     CHECK = "fatline-check"
     PROVE = "fatline-prove"
+    SWEEP = "fatline-sweep"
     PAGE = "fatline-page"
     """Report pages, assets and pictures (text files carrying :data:`TEXT_MARKER`)."""
 
@@ -47,6 +48,7 @@ class Kind(StrEnum):
             Kind.TRACE: "a fatline trace",
             Kind.CHECK: "a fatline check result",
             Kind.PROVE: "a fatline prove result",
+            Kind.SWEEP: "a fatline sweep",
             Kind.PAGE: "a page fatline report wrote",
         }[self]
 

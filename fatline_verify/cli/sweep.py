@@ -1,0 +1,109 @@
+"""``fatline sweep``: each lemma over the whole product of readings, covered by counterexamples."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Any
+
+from ..config import parse_robots, parse_window
+from ..errors import InvalidInput
+from ..outputs import child, claim_dir
+from ..systems.base import ENGINES
+from .check import MAX_Q, with_q
+from .common import (
+    EXIT_FOUND,
+    EXIT_INCONCLUSIVE,
+    EXIT_INTERRUPTED,
+    EXIT_OK,
+    add_command,
+    add_model_argument,
+    emit,
+    integer,
+    model_arg,
+    nonempty,
+)
+
+DEFAULT_ROBOTS = (2, 3)
+DEFAULT_WINDOW = (7, 7)
+
+
+def cmd_sweep(args: argparse.Namespace) -> int:
+    from ..checker import CheckPlan
+    from ..explore.workers import require_dask
+    from ..sweep.run import Sweep, SweepBounds, sweep_lines
+    from ..sweep.space import Space, parse_vary
+
+    model = model_arg(args.model)
+    if args.q is not None:
+        model = with_q(model, args.q)
+    vary = parse_vary(args.vary, model)
+    robots = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else DEFAULT_ROBOTS
+    window = parse_window(args.window, error=InvalidInput) if args.window is not None else DEFAULT_WINDOW
+    CheckPlan.of(model, robots, window, args.max_states, args.engine)  # what a check would refuse, refused now
+    if args.cluster is not None or args.workers > 1:
+        require_dask(f"workers={args.workers}" if args.cluster is None else f"cluster={args.cluster!r}")
+    root = claim_dir(args.out, name="out")
+    sweep = Sweep(
+        Space(model, vary), SweepBounds(robots, window, args.engine, args.max_states), child(root, model.name)
+    )
+    resumed = sweep.resume()  # refuses another sweep's directory, before any work
+
+    def say(line: str) -> None:
+        if not args.quiet:
+            print(line, file=sys.stderr, flush=True)
+
+    if resumed:
+        say(f"resuming: {len(sweep.checks)} checks done, {sweep.open_count():,} combinations open")
+    interrupted = False
+    try:
+        sweep.run(args.max_checks, args.workers, args.cluster, say)
+    except KeyboardInterrupt:
+        interrupted = True
+    sweep.save()
+    lines = sweep_lines(sweep)
+    if interrupted:
+        lines.append(f"INTERRUPTED: {len(sweep.checks)} checks finished and saved in {sweep.json_path}; "
+                     "the same command resumes")  # fmt: skip
+    emit(lines)
+    if interrupted:
+        return EXIT_INTERRUPTED
+    if sweep.open_count():
+        return EXIT_INCONCLUSIVE
+    return EXIT_FOUND if sweep.witnesses else EXIT_OK
+
+
+def register(sub: Any) -> None:
+    p = add_command(sub, "sweep", "each lemma over the whole product of readings, covered by counterexamples")
+    add_model_argument(p)
+    p.add_argument(
+        "--vary",
+        help="comma-separated options to vary (default: every option but the scheduler; the others as in the model)",
+    )
+    p.add_argument(
+        "--robots",
+        help=f"robot count or range checked per combination (default {DEFAULT_ROBOTS[0]}..{DEFAULT_ROBOTS[1]})",
+    )
+    p.add_argument("--window", help=f"WIDTHxHEIGHT lattice points (default {DEFAULT_WINDOW[0]}x{DEFAULT_WINDOW[1]})")
+    p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")
+    p.add_argument("--max-states", type=integer("max-states", 1, 10**10), help="stop a search after this many states")
+    p.add_argument("--engine", choices=list(ENGINES), default=None, help="exploration engine")
+    p.add_argument(
+        "--max-checks",
+        type=integer("max-checks", 1),
+        default=None,
+        help="stop after this many checks (default: until every combination is judged); rerun to go on",
+    )
+    p.add_argument(
+        "--workers", type=integer("workers", 1, 1024), default=1, help="checks at once, on a local Dask cluster"
+    )
+    p.add_argument("--cluster", help="run the checks on the Dask scheduler at tcp://HOST:PORT")
+    p.add_argument(
+        "--out",
+        default="sweeps",
+        type=nonempty("out", "a directory for sweep results"),
+        help="directory for OUT/MODEL/sweep.json, status.npz and the witnesses (default: sweeps); a rerun with the "
+        "same settings resumes",
+    )
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress")
+    p.set_defaults(handler=cmd_sweep)

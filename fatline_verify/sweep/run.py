@@ -1,0 +1,336 @@
+"""``fatline sweep``: each lemma's verdict over a whole product of readings, covered by counterexamples.
+
+Checking each of a million combinations is out of reach; most of them fall to the same few
+counterexamples. So: check one open combination with the bounded checker; replay each witness it
+finds under every combination still open for that lemma (:func:`fatline_verify.sweep.cover.cover`)
+and close every one it refutes; a lemma that is not violated there gets that one combination's
+verdict (HOLDS_WITHIN_BOUNDS or INCONCLUSIVE). Repeat until nothing is open, or the check budget is
+spent. Each finished check is saved at once (``sweep.json`` + ``status.npz`` + the witnesses), and a
+rerun with the same settings resumes from there.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import time
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from functools import partial
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..cache import fingerprint
+from ..config import Model, model_to_mapping
+from ..errors import InvalidInput
+from ..outputs import Kind, read_json, write_json
+from ..properties import CHECKED, Lemma, Verdict
+from .cover import cover, refutes
+from .space import Space, bearing
+
+OPEN, REFUTED, HOLDS, INCONCLUSIVE = 0, 1, 2, 3
+"""A combination's status for one lemma."""
+
+STATUS = {REFUTED: Verdict.VIOLATED, HOLDS: Verdict.HOLDS_WITHIN_BOUNDS, INCONCLUSIVE: Verdict.INCONCLUSIVE}
+
+FORMAT = Kind.SWEEP.value
+VERSION = 1
+
+
+@dataclass(frozen=True, slots=True)
+class SweepBounds:
+    """The checker's bounds for every combination checked."""
+
+    robots: tuple[int, int]
+    window: tuple[int, int]
+    engine: str | None = None
+    max_states: int | None = None
+
+    def as_json(self) -> dict[str, Any]:
+        return {"robots": list(self.robots), "window": list(self.window), "max_states": self.max_states}
+
+
+@dataclass(frozen=True, slots=True)
+class Found:
+    """What one check found at one combination: per lemma the verdict and, if violated, the witness."""
+
+    combo: dict[str, int]
+    verdicts: dict[Lemma, Verdict]
+    witnesses: dict[Lemma, dict[str, Any]]
+    seconds: float
+
+
+def check_combo(model: Model, bounds: SweepBounds, combo: dict[str, int]) -> Found:
+    """The bounded check of ``model`` (one combination's readings): worst verdict per lemma over the
+    robot counts, and the witness of the smallest violating count (replayed by the checker)."""
+    from ..checker import check
+
+    t0 = time.perf_counter()
+    result = check(model, bounds.robots, bounds.window, max_states=bounds.max_states, engine=bounds.engine)
+    verdicts: dict[Lemma, Verdict] = {}
+    witnesses: dict[Lemma, dict[str, Any]] = {}
+    order = [Verdict.VIOLATED, Verdict.INCONCLUSIVE, Verdict.HOLDS_WITHIN_BOUNDS]
+    for r in sorted(result.results, key=lambda r: r.robots):
+        if r.lemma not in CHECKED:
+            continue
+        if r.verdict is Verdict.VIOLATED and r.lemma not in witnesses and r.witness is not None:
+            witnesses[r.lemma] = r.witness
+        now = verdicts.get(r.lemma, Verdict.HOLDS_WITHIN_BOUNDS)
+        verdicts[r.lemma] = min(now, r.verdict, key=order.index)
+    return Found(combo, verdicts, witnesses, time.perf_counter() - t0)
+
+
+def _check_job(args: tuple[Model, SweepBounds, dict[str, int]]) -> Found:
+    return check_combo(*args)
+
+
+@dataclass
+class Sweep:
+    """The sweep of ``space`` (every varied option) at ``bounds``; each lemma judged over the options
+    that bear on it (:func:`fatline_verify.sweep.space.bearing`)."""
+
+    space: Space
+    bounds: SweepBounds
+    out: Path
+    lemmas: tuple[Lemma, ...] = CHECKED
+    spaces: dict[Lemma, Space] = field(init=False)
+    status: dict[Lemma, np.ndarray] = field(init=False)
+    witnesses: list[dict[str, Any]] = field(default_factory=list)
+    checks: list[dict[str, Any]] = field(default_factory=list)
+    replays: int = 0
+
+    def __post_init__(self) -> None:
+        self.spaces = {lemma: Space(self.space.base, bearing(lemma, self.space.names)) for lemma in self.lemmas}
+        self.status = {lemma: np.zeros(s.size, dtype=np.uint8) for lemma, s in self.spaces.items()}
+
+    # --- files -----------------------------------------------------------------------------------
+    @property
+    def json_path(self) -> Path:
+        return self.out / "sweep.json"
+
+    @property
+    def status_path(self) -> Path:
+        return self.out / "status.npz"
+
+    def trace_path(self, lemma: Lemma, k: int) -> Path:
+        return self.out / "traces" / f"{lemma.value}-{k}.json"
+
+    def fingerprint(self) -> str:
+        return fingerprint(
+            self.space.base, "sweep", vary=list(self.space.names), bounds=self.bounds.as_json(), version=VERSION
+        )
+
+    def resume(self) -> bool:
+        """Load a saved sweep with the same settings; ``False`` if there is none. A saved sweep with
+        other settings is refused (it is not this sweep's to overwrite)."""
+        data = read_json(self.json_path)
+        if data is None:
+            return False
+        if data.get("format") != FORMAT:
+            raise InvalidInput(f"out={str(self.out)!r}: sweep.json there is not a fatline sweep; expected a new --out")
+        if data.get("fingerprint") != self.fingerprint():
+            raise InvalidInput(
+                f"out={str(self.out)!r}: holds a sweep with other settings (model, --vary or bounds); expected "
+                "another --out, or the same settings to resume it"
+            )
+        with np.load(self.status_path) as saved:
+            for lemma in self.lemmas:
+                got = saved[lemma.value]
+                if got.shape != self.status[lemma].shape:
+                    raise InvalidInput(f"out={str(self.out)!r}: status.npz does not match sweep.json")
+                self.status[lemma] = got.astype(np.uint8)
+        self.witnesses = list(data["witnesses"])
+        self.checks = list(data["checks"])
+        self.replays = int(data.get("replays", 0))
+        return True
+
+    def save(self) -> None:
+        self.out.mkdir(parents=True, exist_ok=True)
+        tmp = self.out / ".status.npz.tmp"
+        with tmp.open("wb") as fh:
+            arrays: dict[str, Any] = {lemma.value: self.status[lemma] for lemma in self.lemmas}
+            np.savez_compressed(fh, **arrays)
+        tmp.replace(self.status_path)
+        write_json(self.json_path, self.to_json())
+
+    # --- the loop --------------------------------------------------------------------------------
+    def open_count(self) -> int:
+        return sum(int((s == OPEN).sum()) for s in self.status.values())
+
+    def next_combos(self, k: int) -> list[dict[str, int]]:
+        """Up to ``k`` distinct combinations open for some lemma: the first open ones of the first lemma
+        with any (the options that do not bear on it as in the base model), then the next lemma's."""
+        picked: list[dict[str, int]] = []
+        for lemma in self.lemmas:
+            space = self.spaces[lemma]
+            for index in np.flatnonzero(self.status[lemma] == OPEN)[:k]:
+                combo = {**self._base_combo(), **space.combo(int(index))}
+                if combo not in picked:
+                    picked.append(combo)
+                if len(picked) == k:
+                    return picked
+        return picked
+
+    def _base_combo(self) -> dict[str, int]:
+        return self.space.reading_indices(self.space.base.options)
+
+    def absorb(self, found: Found) -> list[str]:
+        """Close what a check found: its witnesses' refuted combinations, its own verdicts. Returns one
+        line per lemma refuted somewhere new."""
+        lines = []
+        for lemma in self.lemmas:
+            space, status = self.spaces[lemma], self.status[lemma]
+            here = space.index(found.combo)
+            verdict = found.verdicts.get(lemma, Verdict.INCONCLUSIVE)
+            doc = found.witnesses.get(lemma)
+            if verdict is Verdict.VIOLATED and doc is not None:
+                covered = cover(space, status == OPEN, partial(refutes, doc, lemma))
+                self.replays += covered.replays
+                if not covered.refuted[here] and status[here] == OPEN:
+                    raise AssertionError(
+                        f"{lemma.value}: the witness found under {space.text(found.combo)} does not refute it there"
+                    )
+                newly = int(covered.refuted.sum())
+                status[covered.refuted] = REFUTED
+                k = sum(1 for w in self.witnesses if w["lemma"] == lemma.value) + 1
+                path = self.trace_path(lemma, k)
+                write_json(path, doc)
+                self.witnesses.append(
+                    {
+                        "lemma": lemma.value,
+                        "trace": path.relative_to(self.out).as_posix(),
+                        "found_under": space.text(found.combo),
+                        "robots": len(doc["initial"]),
+                        "refutes": newly,
+                        "replays": covered.replays,
+                    }
+                )
+                lines.append(f"{lemma.value}: a counterexample of {len(doc['initial'])} robots refutes {newly:,} more")
+            elif status[here] == OPEN:
+                status[here] = HOLDS if verdict is Verdict.HOLDS_WITHIN_BOUNDS else INCONCLUSIVE
+        self.checks.append(
+            {
+                "readings": self.space.text(found.combo),
+                "verdicts": {lemma.value: str(v) for lemma, v in found.verdicts.items()},
+                "seconds": round(found.seconds, 3),
+            }
+        )
+        return lines
+
+    def run(
+        self,
+        max_checks: int | None = None,
+        workers: int = 1,
+        cluster: str | None = None,
+        progress: Callable[[str], None] | None = None,
+    ) -> bool:
+        """Check and cover until nothing is open (``True``) or ``max_checks`` more checks were made.
+        Checks run ``workers`` at a time on a local Dask cluster, or on the Dask scheduler at
+        ``cluster``; covering runs here, and every finished check is saved before the next."""
+        for found in self._checks(max_checks, workers, cluster):
+            for line in self.absorb(found):
+                if progress:
+                    progress(line)
+            self.save()
+            if progress:
+                progress(f"{len(self.checks)} checks, {self.open_count():,} combinations open")
+        return self.open_count() == 0
+
+    def _checks(self, max_checks: int | None, workers: int, cluster: str | None) -> Iterator[Found]:
+        from ..explore.workers import Cluster
+
+        left = max_checks
+        with contextlib.ExitStack() as stack:
+            dask = None
+            if workers > 1 or cluster is not None:
+                dask = stack.enter_context(Cluster(workers, cluster)).client
+            while left is None or left > 0:
+                combos = self.next_combos(max(workers, 1) if left is None else min(max(workers, 1), left))
+                if not combos:
+                    return
+                jobs = [(self.space.model(c), self.bounds, c) for c in combos]
+                if dask is None:
+                    yield from map(_check_job, jobs)
+                else:
+                    yield from dask.gather(dask.map(_check_job, jobs, pure=False))  # type: ignore[no-untyped-call]
+                if left is not None:
+                    left -= len(combos)
+
+    # --- results ---------------------------------------------------------------------------------
+    def lemma_summary(self, lemma: Lemma) -> dict[str, Any]:
+        status = self.status[lemma]
+        names = {REFUTED: "refuted", HOLDS: "holds", INCONCLUSIVE: "inconclusive", OPEN: "open"}
+        counts = {name: int((status == code).sum()) for code, name in names.items()}
+        space = self.spaces[lemma]
+        holds = [space.text(space.combo(int(i))) for i in np.flatnonzero(status == HOLDS)[:50]]
+        return {
+            "lemma": lemma.value,
+            "options": list(space.names),
+            "combinations": space.size,
+            **counts,
+            "counterexamples": sum(1 for w in self.witnesses if w["lemma"] == lemma.value),
+            "holds_under": holds,
+        }
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "format": FORMAT,
+            "version": VERSION,
+            "fingerprint": self.fingerprint(),
+            "model": model_to_mapping(self.space.base),
+            "vary": list(self.space.names),
+            "bounds": self.bounds.as_json(),
+            "lemmas": [self.lemma_summary(lemma) for lemma in self.lemmas],
+            "witnesses": self.witnesses,
+            "checks": self.checks,
+            "replays": self.replays,
+        }
+
+
+def sweep_lines(sweep: Sweep) -> list[str]:
+    """What ``fatline sweep`` prints: per lemma the headline, then the table and the witnesses."""
+    b = sweep.bounds
+    lo, hi = b.robots
+    robots = str(lo) if lo == hi else f"{lo}..{hi}"
+    lines = [
+        f"sweep of {sweep.space.base.describe()}",
+        f"varied: {', '.join(sweep.space.names)}; each combination checked at robots {robots}, "
+        f"window {b.window[0]}x{b.window[1]}",
+        "",
+    ]
+    rows = [("lemma", "readings", "refuted", "holds", "inconclusive", "open", "counterexamples")]
+    for lemma in sweep.lemmas:
+        s = sweep.lemma_summary(lemma)
+        rows.append((lemma.value, f"{s['combinations']:,}", f"{s['refuted']:,}", f"{s['holds']:,}",
+                     f"{s['inconclusive']:,}", f"{s['open']:,}", str(s["counterexamples"])))  # fmt: skip
+    widths = [max(len(r[k]) for r in rows) for k in range(len(rows[0]))]
+    for r in rows:
+        lines.append(
+            "  ".join(c.ljust(w) if k == 0 else c.rjust(w) for k, (c, w) in enumerate(zip(r, widths, strict=True)))
+        )
+    lines.append("")
+    for lemma in sweep.lemmas:
+        lines.append(headline(sweep, lemma))
+    lines.append("")
+    lines.append(f"{len(sweep.checks)} checks, {sweep.replays:,} replays; results in {sweep.json_path}")
+    return lines
+
+
+def headline(sweep: Sweep, lemma: Lemma) -> str:
+    """One sentence: refuted under every reading by k counterexamples, or where it survives."""
+    s = sweep.lemma_summary(lemma)
+    n, k = s["combinations"], s["counterexamples"]
+    by = f"by {k} counterexample{'s' if k != 1 else ''}"
+    if s["refuted"] == n:
+        return f"{lemma.value}: refuted under all {n:,} readings {by}"
+    parts = []
+    if s["holds"]:
+        parts.append(f"holds within bounds under {s['holds']:,}")
+    if s["inconclusive"]:
+        parts.append(f"inconclusive under {s['inconclusive']:,}")
+    if s["refuted"]:
+        parts.append(f"refuted under {s['refuted']:,} {by}")
+    if s["open"]:
+        parts.append(f"{s['open']:,} not judged yet (rerun to go on)")
+    return f"{lemma.value}: of {n:,} readings, " + "; ".join(parts)

@@ -1,0 +1,132 @@
+"""``fatline sweep``: one witness judged under a whole product of readings, as each one alone would be."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from fatline_verify.cli import main
+from fatline_verify.config import load_model
+from fatline_verify.properties import SAFETY, Lemma
+from fatline_verify.sweep.cover import Recorder, cover, refutes
+from fatline_verify.sweep.space import Space, bearing, default_vary
+
+ROOT = Path(__file__).resolve().parent.parent
+TRACES = ROOT / "traces"
+
+
+def brute_force(space: Space, judge) -> np.ndarray:
+    return np.array([judge(space.model(space.combo(i))) for i in range(space.size)])
+
+
+def test_cover_equals_one_judgement_per_combination_for_a_known_function():
+    space = Space(load_model("paper"), ("bands", "vacant", "path", "contact"))
+
+    def judge(model) -> bool:
+        o = model.options
+        if str(o.bands) == "disc":
+            return str(o.contact) == "strict"
+        return str(o.path) != "straight"
+
+    got = cover(space, np.ones(space.size, dtype=bool), judge)
+    assert (got.refuted == brute_force(space, judge)).all()
+    assert got.replays == 2 + 3  # one leaf per (disc, contact) and per (centre, path); vacant never read
+
+
+@pytest.mark.parametrize(
+    ("trace", "vary"),
+    [
+        ("paper-no-collision-n3", ("quadrants", "visibility", "vacant", "scenario4_drop", "timing", "contact")),
+        ("paper-connectivity-n2", ("bands", "visibility", "psi_right", "uncovered", "scenario4_free_path")),
+        ("paper-approach-n2", ("quadrants", "bands", "search_order", "scenario4_drop", "goal")),
+        ("paper-termination-n5", ("visibility", "scenario4_guard", "goal")),
+    ],
+)
+def test_cover_of_a_witness_equals_its_replay_under_each_combination(trace, vary):
+    doc = json.loads((TRACES / f"{trace}.json").read_text())
+    lemma = Lemma(doc["violation"]["property"])
+    space = Space(load_model("paper"), bearing(lemma, vary))
+    among = np.ones(space.size, dtype=bool)
+    among[::5] = False  # only the combinations asked about
+    got = cover(space, among, lambda m: refutes(doc, lemma, m))
+    want = brute_force(space, lambda m: refutes(doc, lemma, m)) & among
+    assert (got.refuted == want).all()
+    assert got.refuted.any()  # the witness refutes its own readings at least
+    assert got.replays < among.sum()
+
+
+def test_a_step_lemma_never_reads_the_goal():
+    for name in ("paper-no-collision-n3", "paper-connectivity-n3"):
+        doc = json.loads((TRACES / f"{name}.json").read_text())
+        lemma = Lemma(doc["violation"]["property"])
+        assert lemma in SAFETY
+        model = load_model("paper")
+        recorder = Recorder(model.options, default_vary(model))
+        assert refutes(doc, lemma, replace(model, options=recorder))  # type: ignore[arg-type]
+        assert "goal" not in recorder.reads
+        assert "visibility" in recorder.reads
+
+
+def test_the_recorder_counts_a_method_as_reading_everything():
+    model = load_model("paper")
+    recorder = Recorder(model.options, ("bands", "goal"))
+    recorder.as_dict()
+    assert set(recorder.reads) == {"bands", "goal"}
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_sweep_cli_covers_a_small_space_and_resumes(tmp_path, capsys):
+    out = tmp_path / "s"
+    argv = ("sweep", "paper", "--vary", "contact,timing,goal", "--robots", "2", "--window", "5x5", "--out", str(out))
+    code, stdout, err = run(capsys, *argv, "-q")
+    assert code in (0, 1), err
+    data = json.loads((out / "paper" / "sweep.json").read_text())
+    assert data["format"] == "fatline-sweep"
+    rows = {r["lemma"]: r for r in data["lemmas"]}
+    assert rows["no-collision"]["combinations"] == 4  # goal does not bear on a step lemma
+    assert rows["termination"]["combinations"] == 12
+    for r in rows.values():
+        assert r["open"] == 0
+        assert r["refuted"] + r["holds"] + r["inconclusive"] == r["combinations"]
+    for w in data["witnesses"]:
+        trace = json.loads((out / "paper" / w["trace"]).read_text())
+        lemma = Lemma(w["lemma"])
+        found = load_model("paper").options.with_(**w["found_under"])
+        assert refutes(trace, lemma, replace(load_model("paper"), options=found))
+    assert "readings" in stdout and "checks" in stdout
+    checks = len(data["checks"])
+    code, stdout, err = run(capsys, *argv)
+    assert "resuming" in err
+    assert len(json.loads((out / "paper" / "sweep.json").read_text())["checks"]) == checks
+    argv = ["sweep", "paper", "--vary", "contact", "--robots", "2", "--window", "5x5", "--out", str(out)]
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and "other settings" in err
+
+
+@pytest.mark.parametrize(
+    ("argv", "fragment"),
+    [
+        (("--vary", "nonsense"), "vary='nonsense': unknown option"),
+        (("--vary", "scheduler"), "the scheduler is fixed"),
+        (("--vary", "motion"), "means nothing under scheduler=ssync"),
+        (("--vary", "bands,bands"), "named twice"),
+        (("--vary", ","), "expected a comma-separated list"),
+        (("--robots", "0"), "robots"),
+        (("--max-checks", "0"), "max-checks"),
+    ],
+)
+def test_sweep_refuses_bad_input_in_one_line(argv, fragment, capsys, tmp_path):
+    code, _, err = run(capsys, "sweep", "paper", "--out", str(tmp_path / "x"), *argv)
+    assert code == 2
+    assert len(err.strip().splitlines()) == 1, err
+    assert fragment in err
+    assert not (tmp_path / "x").exists()
