@@ -273,6 +273,30 @@ def check_robots(
 ) -> tuple[SearchStats, list[LemmaResult]]:
     """Explore every execution of ``n`` robots under ``plan`` and give every lemma its verdict."""
     t0 = time.perf_counter()
+    ex = explore_robots(plan, n, cluster, progress)
+    results = lemma_verdicts(ex)
+    stats = SearchStats(
+        n,
+        plan.window,
+        plan.engine,
+        ex.n_initial,
+        ex.n_states,
+        ex.n_transitions,
+        ex.escaped,
+        ex.violating_only,
+        ex.off_lattice,
+        ex.truncated,
+        time.perf_counter() - t0,
+        plan.bound,
+        ex.nbytes,
+    )
+    return stats, results
+
+
+def explore_robots(
+    plan: CheckPlan, n: int, cluster: Cluster | None = None, progress: ProgressFn | None = None
+) -> Exploration:
+    """Every execution of ``n`` robots under ``plan``: the explored transition system."""
     model, window = plan.model, plan.window
     bound = plan.bound or window
     system = system_for(model)
@@ -313,23 +337,7 @@ def check_robots(
     )
     if pool is not None:
         pool.close()
-    results = lemma_verdicts(ex)
-    stats = SearchStats(
-        n,
-        window,
-        plan.engine,
-        ex.n_initial,
-        ex.n_states,
-        ex.n_transitions,
-        ex.escaped,
-        ex.violating_only,
-        ex.off_lattice,
-        ex.truncated,
-        time.perf_counter() - t0,
-        plan.bound,
-        ex.nbytes,
-    )
-    return stats, results
+    return ex
 
 
 def _result(ex: Exploration, lemma: Lemma, verdict: Verdict, reason: str = "", doc: Any = None) -> LemmaResult:

@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import contextlib
 import time
-from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass, field, replace
 from functools import partial
 from pathlib import Path
 from typing import Any
@@ -25,8 +25,9 @@ from ..cache import fingerprint
 from ..config import Model, model_to_mapping
 from ..errors import InvalidInput
 from ..outputs import Kind, read_json, write_json
-from ..properties import CHECKED, Lemma, Verdict
+from ..properties import CHECKED, Lemma, LemmaResult, Verdict
 from .cover import cover, refutes
+from .equivalent import Explored, held_past_violations, same_exploration
 from .space import Space, bearing
 
 OPEN, REFUTED, HOLDS, INCONCLUSIVE = 0, 1, 2, 3
@@ -53,32 +54,59 @@ class SweepBounds:
 
 @dataclass(frozen=True, slots=True)
 class Found:
-    """What one check found at one combination: per lemma the verdict and, if violated, the witness."""
+    """What one check found at one combination: per lemma the verdict and, if violated, the witness;
+    and what it explored (for :func:`fatline_verify.sweep.equivalent.same_exploration`)."""
 
     combo: dict[str, int]
     verdicts: dict[Lemma, Verdict]
     witnesses: dict[Lemma, dict[str, Any]]
     seconds: float
+    explored: tuple[Explored, ...] = ()
+    """The robot counts explored past violations (only when some lemma holds)."""
+    held: frozenset[Lemma] = frozenset()
+    """The lemmas that hold there too."""
 
 
 def check_combo(model: Model, bounds: SweepBounds, combo: dict[str, int]) -> Found:
     """The bounded check of ``model`` (one combination's readings): worst verdict per lemma over the
-    robot counts, and the witness of the smallest violating count (replayed by the checker)."""
-    from ..checker import check
+    robot counts, the witness of the smallest violating count (replayed by the checker); then, if a
+    lemma holds, the same counts explored past violations (:mod:`fatline_verify.sweep.equivalent`)."""
+    from ..checker import CheckPlan, explore_robots, lemma_verdicts
 
     t0 = time.perf_counter()
-    result = check(model, bounds.robots, bounds.window, max_states=bounds.max_states, engine=bounds.engine)
-    verdicts: dict[Lemma, Verdict] = {}
+    plan = CheckPlan.of(model, bounds.robots, bounds.window, max_states=bounds.max_states, engine=bounds.engine)
+    verdicts = _worst(lemma_verdicts(explore_robots(plan, n)) for n in plan.counts)
     witnesses: dict[Lemma, dict[str, Any]] = {}
+    explored: list[Explored] = []
+    held: frozenset[Lemma] = frozenset()
+    if any(v is Verdict.HOLDS_WITHIN_BOUNDS for v, _ in verdicts.values()):
+        go_on = replace(plan, after_violation="continue")
+        held = frozenset(CHECKED)
+        for n in plan.counts:
+            ex = explore_robots(go_on, n)
+            explored.append(Explored(n, ex.window, ex.start_window, ex.keys[ex.expanded]))
+            held &= held_past_violations(ex)
+    witnesses = {lemma: doc for lemma, (v, doc) in verdicts.items() if v is Verdict.VIOLATED and doc is not None}
+    return Found(
+        combo, {lemma: v for lemma, (v, _) in verdicts.items()}, witnesses, time.perf_counter() - t0,
+        tuple(explored), held,
+    )  # fmt: skip
+
+
+def _worst(runs: Iterable[list[LemmaResult]]) -> dict[Lemma, tuple[Verdict, dict[str, Any] | None]]:
+    """Per checked lemma, the worst verdict over the robot counts (smallest first) and the witness of
+    the first violating count."""
     order = [Verdict.VIOLATED, Verdict.INCONCLUSIVE, Verdict.HOLDS_WITHIN_BOUNDS]
-    for r in sorted(result.results, key=lambda r: r.robots):
-        if r.lemma not in CHECKED:
-            continue
-        if r.verdict is Verdict.VIOLATED and r.lemma not in witnesses and r.witness is not None:
-            witnesses[r.lemma] = r.witness
-        now = verdicts.get(r.lemma, Verdict.HOLDS_WITHIN_BOUNDS)
-        verdicts[r.lemma] = min(now, r.verdict, key=order.index)
-    return Found(combo, verdicts, witnesses, time.perf_counter() - t0)
+    out: dict[Lemma, tuple[Verdict, dict[str, Any] | None]] = {}
+    for results in runs:
+        for r in results:
+            if r.lemma not in CHECKED:
+                continue
+            now, doc = out.get(r.lemma, (Verdict.HOLDS_WITHIN_BOUNDS, None))
+            if order.index(r.verdict) < order.index(now):
+                now, doc = r.verdict, r.witness
+            out[r.lemma] = (now, doc)
+    return out
 
 
 def _check_job(args: tuple[Model, SweepBounds, dict[str, int]]) -> Found:
@@ -99,6 +127,7 @@ class Sweep:
     witnesses: list[dict[str, Any]] = field(default_factory=list)
     checks: list[dict[str, Any]] = field(default_factory=list)
     replays: int = 0
+    _projections: dict[Lemma, np.ndarray] = field(default_factory=dict, init=False, repr=False)
 
     def __post_init__(self) -> None:
         self.spaces = {lemma: Space(self.space.base, bearing(lemma, self.space.names)) for lemma in self.lemmas}
@@ -176,39 +205,24 @@ class Sweep:
         return self.space.reading_indices(self.space.base.options)
 
     def absorb(self, found: Found) -> list[str]:
-        """Close what a check found: its witnesses' refuted combinations, its own verdicts. Returns one
-        line per lemma refuted somewhere new."""
+        """Close what a check found: the combinations its witnesses refute (a lemma already refuted
+        here keeps its earlier counterexamples), and, for each lemma it did not refute, every open
+        combination that explores the same graph. Returns one line per change."""
         lines = []
+        kept: dict[Lemma, int] = {}
         for lemma in self.lemmas:
             space, status = self.spaces[lemma], self.status[lemma]
             here = space.index(found.combo)
+            if status[here] != OPEN:
+                continue
             verdict = found.verdicts.get(lemma, Verdict.INCONCLUSIVE)
             doc = found.witnesses.get(lemma)
             if verdict is Verdict.VIOLATED and doc is not None:
-                covered = cover(space, status == OPEN, partial(refutes, doc, lemma))
-                self.replays += covered.replays
-                if not covered.refuted[here] and status[here] == OPEN:
-                    raise AssertionError(
-                        f"{lemma.value}: the witness found under {space.text(found.combo)} does not refute it there"
-                    )
-                newly = int(covered.refuted.sum())
-                status[covered.refuted] = REFUTED
-                k = sum(1 for w in self.witnesses if w["lemma"] == lemma.value) + 1
-                path = self.trace_path(lemma, k)
-                write_json(path, doc)
-                self.witnesses.append(
-                    {
-                        "lemma": lemma.value,
-                        "trace": path.relative_to(self.out).as_posix(),
-                        "found_under": space.text(found.combo),
-                        "robots": len(doc["initial"]),
-                        "refutes": newly,
-                        "replays": covered.replays,
-                    }
-                )
-                lines.append(f"{lemma.value}: a counterexample of {len(doc['initial'])} robots refutes {newly:,} more")
-            elif status[here] == OPEN:
-                status[here] = HOLDS if verdict is Verdict.HOLDS_WITHIN_BOUNDS else INCONCLUSIVE
+                lines.append(self._cover(lemma, doc, found.combo))
+            else:
+                kept[lemma] = HOLDS if verdict is Verdict.HOLDS_WITHIN_BOUNDS else INCONCLUSIVE
+        if kept:
+            lines += self._equivalent(found, kept)
         self.checks.append(
             {
                 "readings": self.space.text(found.combo),
@@ -217,6 +231,56 @@ class Sweep:
             }
         )
         return lines
+
+    def _cover(self, lemma: Lemma, doc: dict[str, Any], combo: dict[str, int]) -> str:
+        """Replay a new counterexample under every open combination of ``lemma``; close those it refutes."""
+        space, status = self.spaces[lemma], self.status[lemma]
+        covered = cover(space, status == OPEN, partial(refutes, doc, lemma))
+        self.replays += covered.replays
+        if not covered.refuted[space.index(combo)]:
+            raise AssertionError(f"{lemma.value}: the witness found under {space.text(combo)} does not refute it there")
+        newly = int(covered.refuted.sum())
+        status[covered.refuted] = REFUTED
+        k = sum(1 for w in self.witnesses if w["lemma"] == lemma.value) + 1
+        path = self.trace_path(lemma, k)
+        write_json(path, doc)
+        self.witnesses.append(
+            {
+                "lemma": lemma.value,
+                "trace": path.relative_to(self.out).as_posix(),
+                "found_under": space.text(combo),
+                "robots": len(doc["initial"]),
+                "refutes": newly,
+                "replays": covered.replays,
+            }
+        )
+        return f"{lemma.value}: a counterexample of {len(doc['initial'])} robots refutes {newly:,}"
+
+    def _equivalent(self, found: Found, kept: dict[Lemma, int]) -> list[str]:
+        """Close each lemma of ``kept`` at this combination with its verdict; a lemma that holds even
+        past violations also at every open combination whose continued graph it sees alike."""
+        lines = []
+        for lemma, code in kept.items():
+            space, status = self.spaces[lemma], self.status[lemma]
+            status[space.index(found.combo)] = code
+            if code != HOLDS or lemma not in found.held:
+                continue
+            among = (status == OPEN)[self._projection(lemma)]
+            eq = same_exploration(self.space, among, self.space.model(found.combo), list(found.explored), lemma)
+            self.replays += eq.replays
+            targets = np.unique(self._projection(lemma)[eq.same])
+            status[targets] = HOLDS
+            lines.append(f"{lemma.value}: holds within bounds under {len(targets) + 1:,} readings (one graph)")
+        return lines
+
+    def _projection(self, lemma: Lemma) -> np.ndarray:
+        """Each combination of the whole space as a combination of ``lemma``'s space."""
+        if lemma not in self._projections:
+            space = self.spaces[lemma]
+            columns = [self.space.names.index(name) for name in space.names]
+            digits = self.space.digits[:, columns].astype(np.int64)
+            self._projections[lemma] = np.ravel_multi_index(tuple(digits.T), space.sizes).astype(np.int64)
+        return self._projections[lemma]
 
     def run(
         self,

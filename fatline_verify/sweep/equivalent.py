@@ -1,0 +1,125 @@
+"""Which readings make a lemma hold for the same reason as a checked one.
+
+A lemma that holds at one combination cannot be covered by a counterexample, and checking each of
+half a million combinations one at a time is out of reach. So when a lemma holds at a checked
+combination c, the sweep explores c once more with ``after_violation = continue`` (every state
+reachable by moves, violating or not) and, if the lemma holds there too, closes every combination c'
+whose *continued graph, as this lemma sees it* is c's:
+
+- the same initial states (the window's configurations that meet the initial condition), and
+- for every state c expanded, the same expansion: enabled robots, actions, successors, what left the
+  bound or the lattice, this lemma's violation bit on each transition, and (for the lemmas about
+  where the swarm ends) which states are goal states.
+
+Then c' explores the same continued graph, and the lemma's verdict there is c's: it holds. It holds
+under the checker's own semantics too (``after_violation = stop``), which explores a subgraph from the
+same initial states: a step lemma is violated on no edge of the subgraph; a deadlock or a fair cycle
+of the subgraph is one of the whole graph (fairness is read from the same enabled sets). Each
+signature is judged with :func:`fatline_verify.sweep.cover.cover`, one batch of states at a time; the
+surviving set shrinks as it goes.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import partial
+
+import numpy as np
+
+from ..config import Model
+from ..explore.liveness import fair_cycles
+from ..explore.search import Exploration
+from ..properties import CHECKED, SAFETY, Lemma
+from ..systems import system_for
+from ..systems.base import expand_keys
+from .cover import cover
+from .space import Space
+
+BATCH = 24
+"""States judged per replay: fewer means finer splits, more means fewer replays."""
+
+
+@dataclass(frozen=True, slots=True)
+class Explored:
+    """What one robot count's exploration started from and expanded (canonical keys)."""
+
+    n: int
+    bound: tuple[int, int]
+    window: tuple[int, int]
+    expanded: np.ndarray
+
+
+def held_past_violations(ex: Exploration) -> frozenset[Lemma]:
+    """The checked lemmas that hold on a continued exploration (``after_violation = continue``), judged
+    as :func:`fatline_verify.checker.lemma_verdicts` judges, without witnesses (a witness there may pass
+    a violating step, which a trace does not replay). ``approach`` is claimed only with no fair cycle
+    at all (the checker examines each cycle's moves)."""
+    if ex.truncated:
+        return frozenset()
+    expanded = ex.expanded
+    held = {lemma for lemma in SAFETY if not np.any(expanded[ex.edge_src] & ((ex.edge_flags & lemma.flag) != 0))}
+    if ex.escaped:
+        return frozenset(held & set(CHECKED))
+    terminal = expanded & (ex.enabled == 0)
+    if not np.any(terminal & ~ex.goal):
+        held.add(Lemma.PROGRESS)
+        if not fair_cycles(ex, expanded & ~ex.goal):
+            held.add(Lemma.TERMINATION)
+    xs = ex.system.array_positions(ex.state_array(np.nonzero(terminal)[0]))[:, :, 0]
+    if not np.any(xs.min(axis=1) < xs.max(axis=1)) and not fair_cycles(ex, expanded):
+        held.add(Lemma.APPROACH)
+    return frozenset(held & set(CHECKED))
+
+
+def _initial_sig(n: int, bound: tuple[int, int], window: tuple[int, int], model: Model) -> bytes:
+    from ..checker import initial_keys_for
+
+    system = system_for(model)
+    return initial_keys_for(system, n, window, system.codec(n, bound)).tobytes()
+
+
+def _expansion_sig(n: int, bound: tuple[int, int], keys: np.ndarray, lemma: Lemma, model: Model) -> bytes:
+    """What ``lemma``'s verdict reads of the expansion of ``keys``, as bytes (the scalar engine: the
+    executable model itself, so every reading it depends on is read through the model's options)."""
+    system = system_for(model)
+    got = expand_keys(system, system.engine("scalar"), system.codec(n, bound), keys)
+    parts = [got.enabled, got.src, got.action, got.key, got.fits, got.exact, (got.flags & lemma.flag) != 0]
+    if lemma not in SAFETY:
+        parts.append(got.goal)
+    return b"|".join(np.ascontiguousarray(p).tobytes() for p in parts)
+
+
+def _same(signature: Callable[[Model], bytes], reference: bytes, model: Model) -> bool:
+    return signature(model) == reference
+
+
+@dataclass(frozen=True, slots=True)
+class Equivalence:
+    """The combinations (a mask over the space) whose continued graph the lemma sees as the reference's."""
+
+    same: np.ndarray
+    replays: int
+
+
+def same_exploration(
+    space: Space, among: np.ndarray, reference: Model, explored: list[Explored], lemma: Lemma
+) -> Equivalence:
+    """Of ``among`` (a mask over ``space``), the combinations whose continued graph at the same bounds
+    ``lemma`` sees as the reference model's, robot count by robot count (see the module docstring);
+    ``explored``: the reference's continued explorations."""
+    same = among.copy()
+    replays = 0
+    for ex in explored:
+        signatures: list[Callable[[Model], bytes]] = [partial(_initial_sig, ex.n, ex.bound, ex.window)]
+        keys = np.sort(ex.expanded)
+        signatures += [
+            partial(_expansion_sig, ex.n, ex.bound, keys[i : i + BATCH], lemma) for i in range(0, len(keys), BATCH)
+        ]
+        for signature in signatures:
+            if not same.any():
+                return Equivalence(same, replays)
+            judged = cover(space, same, partial(_same, signature, signature(reference)))
+            replays += judged.replays + 1
+            same &= judged.refuted
+    return Equivalence(same, replays)
