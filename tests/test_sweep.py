@@ -121,6 +121,8 @@ def test_sweep_cli_covers_a_small_space_and_resumes(tmp_path, capsys):
         (("--vary", "motion"), "means nothing under scheduler=ssync"),
         (("--vary", "bands,bands"), "named twice"),
         (("--vary", ","), "expected a comma-separated list"),
+        (("--lemma", "happiness"), "lemma='happiness': expected a comma-separated list of connectivity"),
+        (("--lemma", "approach,approach"), "expected each lemma once"),
         (("--robots", "0"), "robots"),
         (("--max-checks", "0"), "max-checks"),
     ],

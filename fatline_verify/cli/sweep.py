@@ -9,6 +9,7 @@ from typing import Any
 from ..config import parse_robots, parse_window
 from ..errors import InvalidInput
 from ..outputs import child, claim_dir
+from ..properties import CHECKED, Lemma
 from ..systems.base import ENGINES
 from .check import MAX_Q, with_q
 from .common import (
@@ -38,6 +39,7 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     if args.q is not None:
         model = with_q(model, args.q)
     vary = parse_vary(args.vary, model)
+    lemmas = parse_lemmas(args.lemma)
     robots = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else DEFAULT_ROBOTS
     window = parse_window(args.window, error=InvalidInput) if args.window is not None else DEFAULT_WINDOW
     CheckPlan.of(model, robots, window, args.max_states, args.engine)  # what a check would refuse, refused now
@@ -45,7 +47,7 @@ def cmd_sweep(args: argparse.Namespace) -> int:
         require_dask(f"workers={args.workers}" if args.cluster is None else f"cluster={args.cluster!r}")
     root = claim_dir(args.out, name="out")
     sweep = Sweep(
-        Space(model, vary), SweepBounds(robots, window, args.engine, args.max_states), child(root, model.name)
+        Space(model, vary), SweepBounds(robots, window, args.engine, args.max_states), child(root, model.name), lemmas
     )
     resumed = sweep.resume()  # refuses another sweep's directory, before any work
 
@@ -73,6 +75,20 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     return EXIT_FOUND if sweep.witnesses else EXIT_OK
 
 
+def parse_lemmas(text: str | None) -> tuple[Lemma, ...]:
+    """``--lemma a,b`` as checked lemmas in table order (default: every one)."""
+    if text is None:
+        return CHECKED
+    names = [t.strip() for t in text.split(",") if t.strip()]
+    known = {lemma.value: lemma for lemma in CHECKED}
+    for name in names or [text]:
+        if name not in known:
+            raise InvalidInput(f"lemma={name!r}: expected a comma-separated list of {', '.join(known)}")
+    if len(set(names)) != len(names):
+        raise InvalidInput(f"lemma={text!r}: expected each lemma once")
+    return tuple(lemma for lemma in CHECKED if lemma.value in names)
+
+
 def register(sub: Any) -> None:
     p = add_command(sub, "sweep", "each lemma over the whole product of readings, covered by counterexamples")
     add_model_argument(p)
@@ -80,6 +96,7 @@ def register(sub: Any) -> None:
         "--vary",
         help="comma-separated options to vary (default: every option but the scheduler; the others as in the model)",
     )
+    p.add_argument("--lemma", help="comma-separated lemmas to sweep (default: every lemma the checker decides)")
     p.add_argument(
         "--robots",
         help=f"robot count or range checked per combination (default {DEFAULT_ROBOTS[0]}..{DEFAULT_ROBOTS[1]})",

@@ -20,6 +20,7 @@ from ..algorithm import Rule
 from ..config import Model
 from ..options import Contact, Scheduler
 from ..properties import Lemma
+from .solving import exact_value, rlimit, unknown_reason
 from .symbolic import Slot, decide, make_slots, real, sq, view_reach
 
 
@@ -164,20 +165,6 @@ def write(ob: Obligation, path: Path) -> None:
     path.write_text(smt2(ob), encoding="utf-8")
 
 
-def _fraction(value: z3.ExprRef) -> tuple[Fraction, bool]:
-    if z3.is_rational_value(value):
-        return Fraction(value.numerator_as_long(), value.denominator_as_long()), False
-    if z3.is_algebraic_value(value):
-        approx = value.approx(40)
-        return Fraction(approx.numerator_as_long(), approx.denominator_as_long()), True
-    raise ValueError(f"unexpected model value {value}")
-
-
-RLIMIT_PER_SECOND = 2_000_000
-"""z3 resource units per second of ``--timeout``. Measured here: 1 to 4 million units a second
-depending on the obligation, so the deterministic limit normally stops a check before the clock does."""
-
-
 def solve(ob: Obligation, timeout_s: float) -> Answer:
     """Ask z3; for sat, decode the present robots to exact rationals (algebraic values rounded).
 
@@ -185,7 +172,7 @@ def solve(ob: Obligation, timeout_s: float) -> Answer:
     the machine's load; the wall clock only stops a runaway check at three times ``timeout_s``.
     """
     solver = z3.Solver()
-    solver.set("rlimit", max(1, int(RLIMIT_PER_SECOND * timeout_s)))
+    solver.set("rlimit", rlimit(timeout_s))
     solver.set("timeout", int(3 * timeout_s * 1000))
     solver.add(*ob.assertions)
     t0 = time.perf_counter()
@@ -194,16 +181,13 @@ def solve(ob: Obligation, timeout_s: float) -> Answer:
     if res == z3.unsat:
         return Answer("unsat", seconds)
     if res == z3.unknown:
-        reason = solver.reason_unknown()
-        if "resource" in reason or "timeout" in reason or "canceled" in reason:
-            reason = f"budget exhausted (rlimit {int(RLIMIT_PER_SECOND * timeout_s):,}, about {timeout_s:g} s)"
-        return Answer("unknown", seconds, reason)
+        return Answer("unknown", seconds, unknown_reason(solver, timeout_s))
     m = solver.model()
     points, rounded = [], False
     for slot in ob.slots:
         if z3.is_true(m.eval(slot.present, model_completion=True)):
-            x, rx = _fraction(m.eval(slot.x, model_completion=True))
-            y, ry = _fraction(m.eval(slot.y, model_completion=True))
+            x, rx = exact_value(m.eval(slot.x, model_completion=True))
+            y, ry = exact_value(m.eval(slot.y, model_completion=True))
             rounded = rounded or rx or ry
             points.append((x, y))
     flags = tuple(z3.is_true(m.eval(f, model_completion=True)) for f in ob.flags)
@@ -235,6 +219,6 @@ def evaluate(model: Model, others: list[tuple[Fraction, Fraction]]) -> tuple[Rul
         raise AssertionError("a concrete snapshot has no symbolic decision")
     m = solver.model()
     rule = Rule(list(Rule)[m.eval(dec.rule).as_long()])
-    dx, _ = _fraction(m.eval(dec.dx, model_completion=True))
-    dy, _ = _fraction(m.eval(dec.dy, model_completion=True))
+    dx, _ = exact_value(m.eval(dec.dx, model_completion=True))
+    dy, _ = exact_value(m.eval(dec.dy, model_completion=True))
     return rule, (dx, dy)

@@ -34,7 +34,9 @@ class Answer:
     rounded: bool = False
 
 
-def _fraction(value: z3.ExprRef, q: int | None) -> tuple[Fraction, bool]:
+def exact_value(value: z3.ExprRef, q: int | None = None) -> tuple[Fraction, bool]:
+    """A model value as a fraction (an integer on the lattice x = X/q divided by ``q``), and whether it
+    was rounded (an algebraic number, to 40 digits)."""
     if z3.is_int_value(value):
         return Fraction(value.as_long(), q or 1), False
     if z3.is_rational_value(value):
@@ -47,6 +49,14 @@ def _fraction(value: z3.ExprRef, q: int | None) -> tuple[Fraction, bool]:
 
 def rlimit(seconds: float) -> int:
     return max(1, int(RLIMIT_PER_SECOND * seconds))
+
+
+def unknown_reason(solver: z3.Solver, seconds: float) -> str:
+    """Why a check answered unknown: the budget, said in the user's terms, or z3's own reason."""
+    reason = str(solver.reason_unknown())
+    if any(word in reason for word in ("resource", "timeout", "canceled")):
+        return f"budget exhausted (rlimit {rlimit(seconds):,}, about {seconds:g} s)"
+    return reason
 
 
 def solver_for(built: Built, seconds: float) -> z3.Solver:
@@ -67,16 +77,13 @@ def check(solver: z3.Solver, built: Built, seconds: float) -> Answer:
     if res == z3.unsat:
         return Answer("unsat", spent)
     if res == z3.unknown:
-        reason = solver.reason_unknown()
-        if any(word in reason for word in ("resource", "timeout", "canceled")):
-            reason = f"budget exhausted (rlimit {rlimit(seconds):,}, about {seconds:g} s)"
-        return Answer("unknown", spent, reason)
+        return Answer("unknown", spent, unknown_reason(solver, seconds))
     m = solver.model()
     positions: Positions = {}
     rounded = False
     for name, (x, y) in built.bodies.items():
-        fx, rx = _fraction(m.eval(x, model_completion=True), built.ar.q)
-        fy, ry = _fraction(m.eval(y, model_completion=True), built.ar.q)
+        fx, rx = exact_value(m.eval(x, model_completion=True), built.ar.q)
+        fy, ry = exact_value(m.eval(y, model_completion=True), built.ar.q)
         positions[name] = (fx, fy)
         rounded = rounded or rx or ry
     return Answer("sat", spent, positions=positions, rounded=rounded)

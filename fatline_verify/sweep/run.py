@@ -147,7 +147,12 @@ class Sweep:
 
     def fingerprint(self) -> str:
         return fingerprint(
-            self.space.base, "sweep", vary=list(self.space.names), bounds=self.bounds.as_json(), version=VERSION
+            self.space.base,
+            "sweep",
+            vary=list(self.space.names),
+            bounds=self.bounds.as_json(),
+            lemmas=[lemma.value for lemma in self.lemmas],
+            version=VERSION,
         )
 
     def resume(self) -> bool:
@@ -160,8 +165,8 @@ class Sweep:
             raise InvalidInput(f"out={str(self.out)!r}: sweep.json there is not a fatline sweep; expected a new --out")
         if data.get("fingerprint") != self.fingerprint():
             raise InvalidInput(
-                f"out={str(self.out)!r}: holds a sweep with other settings (model, --vary or bounds); expected "
-                "another --out, or the same settings to resume it"
+                f"out={str(self.out)!r}: holds a sweep with other settings (model, --vary, --lemma or bounds); "
+                "expected another --out, or the same settings to resume it"
             )
         with np.load(self.status_path) as saved:
             for lemma in self.lemmas:

@@ -50,7 +50,7 @@ def parse_vary(text: str | None, model: Model) -> tuple[str, ...]:
                 f"expected one of {', '.join(default_vary(model))}"
             )
     if len(set(names)) != len(names):
-        raise InvalidInput(f"vary={text!r}: an option is named twice")
+        raise InvalidInput(f"vary={text!r}: an option is named twice; expected each option once")
     return tuple(name for name in CATALOGUE if name in names)
 
 
