@@ -54,6 +54,8 @@ ENCODED = (Scheduler.SSYNC, Scheduler.FSYNC, Scheduler.CENTRALIZED)
 
 LATTICES = (1, 2, 4)
 """The lattices ``x = X / q`` searched for an initial counterexample before the reals."""
+LATTICES_TEXT = ", ".join(map(str, LATTICES))
+"""How reasons name them (``q=1, 2, 4``)."""
 
 SHARE = {"vacuity": 0.05, "reals": 0.4, "reals-initial": 0.2}
 """Each step's share of the per-obligation budget (the lattices: :data:`LATTICE_SHARE`)."""
@@ -325,7 +327,7 @@ def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) ->
     if spec.form == TWO_MOVERS:
         return result(
             Verdict.INCONCLUSIVE,
-            f"no initial counterexample on the lattices q={', '.join(map(str, LATTICES))}; two-mover obligations "
+            f"no initial counterexample on the lattices q={LATTICES_TEXT}; two-mover obligations "
             "(every case of both rules, with both robots' witnesses) are not searched over the reals: their real "
             "form, written to the .smt2 file, is beyond this budget",
         )
@@ -337,7 +339,7 @@ def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) ->
     if ans.status == "unknown":
         return result(
             Verdict.INCONCLUSIVE,
-            f"solver: {ans.reason}; no initial counterexample on the lattices q={', '.join(map(str, LATTICES))}; "
+            f"solver: {ans.reason}; no initial counterexample on the lattices q={LATTICES_TEXT}; "
             "rerun with a larger --timeout",
         )
     got = replay(model, spec, ans.positions, full.focus)
@@ -346,13 +348,12 @@ def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) ->
             Verdict.INCONCLUSIVE,
             f"the solver's counterexample has irrational coordinates and its rational rounding does not reproduce "
             f"({got}): a boundary case exact rational replay cannot confirm; no initial counterexample on the "
-            f"lattices q={', '.join(map(str, LATTICES))}",
+            f"lattices q={LATTICES_TEXT}",
         )
     if isinstance(got, str):
         return result(Verdict.INCONCLUSIVE, f"encoding disagreement (reals): {got}")
-    rounded = "; values rounded from algebraic numbers and re-checked" if ans.rounded else ""
     if got.initial:
-        return result(Verdict.VIOLATED, _found(got, "reals") + rounded, got)
+        return result(Verdict.VIOLATED, _found(got, "reals", ans.rounded), got)
     seconds = timeout * SHARE["reals-initial"]  # a violation exists: look for an initial one on the reals
     again = build(Arith(None), model, spec, initial=True)
     more = check(solver_for(again, seconds), again, seconds)
@@ -362,12 +363,11 @@ def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) ->
         if isinstance(found, str):
             return result(Verdict.INCONCLUSIVE, f"encoding disagreement (reals, initial): {found}")
         if found.initial:
-            rounded = "; values rounded from algebraic numbers and re-checked" if more.rounded else ""
-            return result(Verdict.VIOLATED, _found(found, "reals") + rounded, found)
+            return result(Verdict.VIOLATED, _found(found, "reals", more.rounded), found)
     initial_too = (
         "none from an initial configuration over the reals"
         if more.status == "unsat"
-        else f"no initial one on the lattices q={', '.join(map(str, LATTICES))} or the reals within the budget"
+        else f"no initial one on the lattices q={LATTICES_TEXT} or the reals within the budget"
     )
     return result(
         Verdict.INCONCLUSIVE,
@@ -379,8 +379,10 @@ def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) ->
     )
 
 
-def _found(got: Replayed, where: str) -> str:
-    return f"{got.what}, from an initial configuration of {len(got.state)} robots ({where}, replayed)"
+def _found(got: Replayed, where: str, rounded: bool = False) -> str:
+    """The reason of a VIOLATED verdict; ``rounded``: the solver's values were algebraic."""
+    tail = "; values rounded from algebraic numbers and re-checked" if rounded else ""
+    return f"{got.what}, from an initial configuration of {len(got.state)} robots ({where}, replayed){tail}"
 
 
 def _result(
@@ -517,8 +519,9 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
 
 
 ENCODING_VERSION = 4
-"""Bumped whenever an obligation's meaning changes (part of the cache fingerprint). 3: role-assigned
-obligations per decision case."""
+"""Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
+role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
+initial search over the reals after a non-initial solution, fsync replays activate every robot."""
 
 
 __all__ = [

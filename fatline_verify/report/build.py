@@ -83,11 +83,11 @@ def cached_check(model: Model, cache: Path, traces: Path, refresh: bool) -> dict
 def cached_prove(model: Model, proofs: Path, slots: int, timeout: float, refresh: bool) -> dict[str, Any]:
     """The model's prover results (``proofs/MODEL/results.json``): up-to-date rows are reused, the
     others recomputed and merged in; rows of other settings or obligations are kept."""
+    refused = _refusal(model, proofs, slots, timeout)
+    if refused is not None:
+        return refused
     store = ProofResults(model, proofs, proofs / "traces", slots=slots, timeout=timeout)
-    try:
-        tasks = tasks_for(model)
-    except NotEncodedScheduler as exc:
-        return {**store.document([]), "not_encoded": str(exc)}
+    tasks = tasks_for(model)
     todo = tasks if refresh else [t for t in tasks if store.fresh(t) is None]
     if todo:
         prove(model, slots=slots, timeout=timeout, out=proofs, tasks=todo, on_result=store.add)
@@ -160,10 +160,15 @@ def _saved_prove(model: Model, proofs: Path) -> dict[str, Any] | None:
     path = proofs / "results.json"
     if is_output(path, Kind.PROVE):
         return read_json(path)
+    return _refusal(model, proofs, DEFAULT_SLOTS, DEFAULT_TIMEOUT)
+
+
+def _refusal(model: Model, proofs: Path, slots: int, timeout: float) -> dict[str, Any] | None:
+    """For a scheduler the prover does not encode, the prover results document saying so; else ``None``."""
     try:
         tasks_for(model)
     except NotEncodedScheduler as exc:
-        store = ProofResults(model, proofs, proofs / "traces", slots=DEFAULT_SLOTS, timeout=DEFAULT_TIMEOUT)
+        store = ProofResults(model, proofs, proofs / "traces", slots=slots, timeout=timeout)
         return {**store.document([]), "not_encoded": str(exc)}
     return None
 
