@@ -4,19 +4,23 @@ VIOLATED with a counterexample the executable model replays from an initial conf
 Obligations (:mod:`fatline_verify.smt.claims`) name r, the witnesses of r's case, and the robot the
 claim is about; the rest of any swarm is covered by the witness argument written in each one's
 header. Each obligation runs in a fresh process (:mod:`fatline_verify.fresh`) and is decided in
-three steps, each with its own z3 context and deterministic budget:
+rounds of growing budget (2 s, then 4 times more, the last round taking what is left of
+``--timeout``); each round runs every step still open, each step with its own z3 context and
+deterministic budget:
 
-1. **Vacuity**: if "r makes this case's decision" has no solution over the reals, the case never
-   fires under the model's readings: PROVED, "the case never fires".
-2. **Lattices first**: the named robots on the lattices ``x = X / q`` (q = 1, 2, 4; integer
+1. **Vacuity** (first round): if "r makes this case's decision" has no solution over the reals, the
+   case never fires under the model's readings: PROVED, "the case never fires".
+2. **Lattices first**: the named robots on the lattices ``x = X / q`` (q = 1, 2, 4, 8, 20; integer
    arithmetic) with the paper's initial condition on them. A solution is replayed by the executable
    model: if r decides the same case, the claim fails and the configuration is initial, VIOLATED. A
-   placement that does not replay as initial is blocked and the search goes on.
+   placement that does not replay as initial is blocked (in every later round too) and the search
+   goes on; a lattice with no solution is not searched again.
 3. **The reals** (not for two movers: their group obligations are beyond any budget tried), without
    the initial condition: ``unsat`` is PROVED (every size, by the header's argument); ``sat`` is
-   replayed, VIOLATED if the configuration is initial; otherwise the reals are searched once more
-   with the initial condition, and without an initial solution the verdict is INCONCLUSIVE with the
-   configuration and what would decide it; ``unknown`` is INCONCLUSIVE with the budget.
+   replayed, VIOLATED if the configuration is initial; otherwise the reals are searched with the
+   initial condition (in this round and the later ones), and without an initial solution the verdict
+   is INCONCLUSIVE with the configuration and what would decide it; ``unknown`` after the last round
+   is INCONCLUSIVE with the budget.
 
 A replay that disagrees with the encoding (r decides another case, or the claim holds) is a bug of
 the tool and reported as "encoding disagreement". The global form of Lemma 1 (the whole graph)
@@ -30,7 +34,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .algorithm import Band, Decision
 from .cases import Case, case_of, moving_cases, staying_cases
@@ -45,23 +49,45 @@ from .schedule import Collision, decide_all, lost_edges, play_round
 from .schedulers import round_scheduler
 from .simulate import Outcome, Run, outcome_after
 from .smt import obligations as ob
-from .smt.claims import CLOSER, GLOBAL, ONE_MOVER, SEEN, TWO_MOVERS, X_NONDECREASING, NotEncoded, Spec, argument
+from .smt.claims import (
+    CLOSER,
+    GLOBAL,
+    ONE_MOVER,
+    SEEN,
+    TWO_MOVERS,
+    X_NONDECREASING,
+    Built,
+    NotEncoded,
+    Spec,
+    argument,
+)
 from .swarm import initial_problems
 from .trace import replayed_document
+
+if TYPE_CHECKING:
+    from .smt.solving import Answer, Positions
 
 ENCODED = (Scheduler.SSYNC, Scheduler.FSYNC, Scheduler.CENTRALIZED)
 """The schedulers the obligations encode: every mover decides on one shared snapshot."""
 
-LATTICES = (1, 2, 4)
+LATTICES = (1, 2, 4, 8, 20)
 """The lattices ``x = X / q`` searched for an initial counterexample before the reals."""
 LATTICES_TEXT = ", ".join(map(str, LATTICES))
 """How reasons name them (``q=1, 2, 4``)."""
 
-SHARE = {"vacuity": 0.05, "reals": 0.4, "reals-initial": 0.2}
-"""Each step's share of the per-obligation budget (the lattices: :data:`LATTICE_SHARE`)."""
+SHARE = {"vacuity": 0.05, "lattices": 0.7, "reals": 0.15, "reals-initial": 0.1}
+"""Each step's share of a round's budget. Measured on the shipped models: a search that finds a
+counterexample mostly finds it on a lattice (the slowest took 15 s at q = 8), and the reals answer
+within a second (the median PROVED) or not within a minute."""
 
-LATTICE_SHARE = {1: 0.15, 2: 0.1, 4: 0.05}
-"""Each lattice's share of the budget: the coarsest, where most counterexamples lie, gets the most."""
+LATTICE_WEIGHT = {1: 3, 2: 2, 4: 2, 8: 2, 20: 2}
+"""How the lattices' share of a round is split among the lattices still open (the coarsest, where most
+counterexamples lie, gets the most; a lattice without solutions gives its part to the others)."""
+
+FIRST_ROUND = 2.0
+"""The first round's budget in seconds (most obligations are decided in it)."""
+GROWTH = 4
+"""Each round's budget is this many times the last one's."""
 
 MAX_BLOCKED = 4
 """Non-initial lattice placements blocked per lattice before moving on."""
@@ -103,7 +129,7 @@ class ProofResult:
 
 DEFAULT_SLOTS = 3
 """Slot robots of the global connectivity form, unless asked otherwise."""
-DEFAULT_TIMEOUT = 4.0
+DEFAULT_TIMEOUT = 60.0
 """Solver seconds per obligation, unless asked otherwise."""
 
 LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
@@ -278,105 +304,204 @@ def _claim_fails(model: Model, spec: Spec, state: Sequence[Point], dec: Decision
 # --- one obligation ---------------------------------------------------------------------------------
 
 
+def rounds(timeout: float) -> list[float]:
+    """The budgets of successive rounds within ``timeout``: :data:`FIRST_ROUND` seconds, then
+    :data:`GROWTH` times more each round, the last taking whatever is left (60 s: 2, 8, 50)."""
+    budgets: list[float] = []
+    left, budget = timeout, min(FIRST_ROUND, timeout)
+    while left > 1e-9:
+        take = left if left <= budget * (1 + GROWTH) else budget
+        budgets.append(take)
+        left -= take
+        budget *= GROWTH
+    return budgets
+
+
+class _Search:
+    """One obligation's search, in rounds of growing budget (see :func:`prove_spec`)."""
+
+    def __init__(self, model: Model, spec: Spec, full: Built, path: str) -> None:
+        self.model, self.spec, self.full, self.path = model, spec, full, path
+        self.spent = 0.0
+        self.blocked: dict[int, list[Positions]] = {q: [] for q in LATTICES}
+        self.off_lattice: set[int] = set()
+        """Lattices the obligation cannot be put on (a constant off it), or a form searched over the reals only."""
+        self.exhausted: set[int] = set()
+        """Lattices with no solution at all (unsat): nothing more to find there."""
+        self.non_initial: Replayed | None = None
+        """A replayed violation over the reals whose configuration is not initial."""
+        self.initial_unsat = False
+        """No violation from an initial configuration over the reals at all."""
+        self.irrational: str | None = None
+        """Why the reals' counterexample, irrational and rounded, does not reproduce."""
+        self.last = ""
+
+    def result(self, verdict: Verdict, reason: str, rep: Replayed | None = None) -> ProofResult:
+        named = len(self.full.bodies) - 1
+        return _result(self.spec, verdict, named, self.spent, reason, self.path, rep, self.full.comment)
+
+    def solve(self, built: Built, seconds: float, blocked: Sequence[Positions] = ()) -> Answer:
+        from .smt.solving import block, check, solver_for
+
+        solver = solver_for(built, seconds)
+        for placement in blocked:
+            block(solver, built, placement)
+        ans = check(solver, built, seconds)
+        self.spent += ans.seconds
+        return ans
+
+    def vacuous(self, budget: float) -> ProofResult | None:
+        from .smt.cases import Arith
+        from .smt.claims import build
+
+        vac = build(Arith(None), self.model, self.spec, vacuity=True)
+        if self.solve(vac, budget * SHARE["vacuity"]).status == "unsat":
+            return self.result(
+                Verdict.PROVED, f"the case never fires under these readings (vacuous; {self.spent:.2f} s)"
+            )
+        return None
+
+    def lattices(self, budget: float) -> ProofResult | None:
+        from .smt.cases import Arith
+        from .smt.claims import build
+
+        for q in LATTICES:
+            if q in self.off_lattice or q in self.exhausted:
+                continue
+            try:
+                lat = build(Arith(q), self.model, self.spec, initial=True)
+            except (ValueError, NotEncoded):
+                self.off_lattice.add(q)
+                continue
+            open_weight = sum(LATTICE_WEIGHT[k] for k in LATTICES if k not in self.off_lattice | self.exhausted)
+            seconds = budget * SHARE["lattices"] * LATTICE_WEIGHT[q] / open_weight
+            for _ in range(MAX_BLOCKED):
+                ans = self.solve(lat, seconds, self.blocked[q])
+                if ans.status == "unsat":
+                    self.exhausted.add(q)
+                if ans.status != "sat":
+                    break
+                got = replay(self.model, self.spec, ans.positions, lat.focus)
+                if isinstance(got, str):
+                    return self.result(Verdict.INCONCLUSIVE, f"encoding disagreement (lattice q={q}): {got}")
+                if got.initial:
+                    return self.result(Verdict.VIOLATED, _found(got, f"lattice q={q}"), got)
+                self.blocked[q].append(ans.positions)
+        return None
+
+    def reals(self, budget: float) -> ProofResult | None:
+        if self.non_initial is None and self.irrational is None:
+            ans = self.solve(self.full, budget * SHARE["reals"])
+            if ans.status == "unsat":
+                return self.result(
+                    Verdict.PROVED, "unsat over the reals: holds for swarms of every size (the header's argument)"
+                )
+            if ans.status == "unknown":
+                self.last = ans.reason
+                return None
+            got = replay(self.model, self.spec, ans.positions, self.full.focus)
+            if isinstance(got, str) and ans.rounded:
+                self.irrational = got  # the lattices and the initial search may still find a rational one
+                return self.reals_initial(budget)
+            if isinstance(got, str):
+                return self.result(Verdict.INCONCLUSIVE, f"encoding disagreement (reals): {got}")
+            if got.initial:
+                return self.result(Verdict.VIOLATED, _found(got, "reals", ans.rounded), got)
+            self.non_initial = got
+        return self.reals_initial(budget)
+
+    def reals_initial(self, budget: float) -> ProofResult | None:
+        """A violation exists, from a configuration that is not initial: look for an initial one."""
+        from .smt.cases import Arith
+        from .smt.claims import build
+
+        again = build(Arith(None), self.model, self.spec, initial=True)
+        more = self.solve(again, budget * SHARE["reals-initial"])
+        if more.status == "unsat":
+            self.initial_unsat = True
+        if more.status != "sat":
+            return None
+        found = replay(self.model, self.spec, more.positions, again.focus)
+        if isinstance(found, str) and more.rounded:
+            return None  # irrational again: left to the lattices
+        if isinstance(found, str):
+            return self.result(Verdict.INCONCLUSIVE, f"encoding disagreement (reals, initial): {found}")
+        if found.initial:
+            return self.result(Verdict.VIOLATED, _found(found, "reals", more.rounded), found)
+        return None
+
+    def done(self) -> bool:
+        """Nothing left to search: no initial violation over the reals (so none on a lattice), or,
+        for two movers (lattices only), every lattice exhausted."""
+        lattices_done = len(self.exhausted | self.off_lattice) == len(LATTICES)
+        return self.initial_unsat or (self.spec.form == TWO_MOVERS and lattices_done)
+
+    def give_up(self, timeout: float) -> ProofResult:
+        """INCONCLUSIVE after every round, with what is known and what would decide it."""
+        lattices = f"no initial counterexample on the lattices q={LATTICES_TEXT}"
+        if self.spec.form == TWO_MOVERS:
+            return self.result(
+                Verdict.INCONCLUSIVE,
+                f"{lattices}; two-mover obligations (every case of both rules, with both robots' witnesses) are not "
+                "searched over the reals: their real form, written to the .smt2 file, is beyond this budget",
+            )
+        got = self.non_initial
+        if got is None and self.irrational is not None:
+            return self.result(
+                Verdict.INCONCLUSIVE,
+                f"the solver's counterexample has irrational coordinates and its rational rounding does not reproduce "
+                f"({self.irrational}): a boundary case exact rational replay cannot confirm; {lattices}",
+            )
+        if got is None:
+            return self.result(
+                Verdict.INCONCLUSIVE,
+                f"solver: {self.last} in the last of {len(rounds(timeout))} rounds ({timeout:g} s in all); {lattices}; "
+                "rerun with a larger --timeout",
+            )
+        initial_too = (
+            "none from an initial configuration over the reals"
+            if self.initial_unsat
+            else f"no initial one on the lattices q={LATTICES_TEXT} or the reals within the budget"
+        )
+        return self.result(
+            Verdict.INCONCLUSIVE,
+            f"{got.what} in a configuration of {len(got.state)} robots that is not initial ({got.problems[0]}); "
+            f"{initial_too}; whether it is reachable is not decided: rerun with a larger --timeout, or check the "
+            "configuration's swarm size with fatline check",
+            got,
+        )
+
+
 def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) -> ProofResult:
-    """Decide one obligation (see the module docstring); write its real-number form under ``out``."""
+    """Decide one obligation (see the module docstring); write its real-number form under ``out``.
+
+    The search runs in rounds of growing budget (:func:`rounds`), each round every step that is still
+    open (vacuity in the first only), so an easy answer costs a small round and a hard one gets most
+    of ``timeout``."""
     from .smt.cases import Arith
     from .smt.claims import build
-    from .smt.solving import block, check, solver_for, write
+    from .smt.solving import write
 
-    spent = 0.0
     try:
         full = build(Arith(None), model, spec)
     except NotEncoded as exc:
         return _result(spec, Verdict.INCONCLUSIVE, 0, 0.0, f"not encoded: {exc}", "", None)
     full.comment = argument(model, spec, full)
-    named = len(full.bodies) - 1
     path = ""
     if out is not None:
         target = out / spec.lemma / f"{spec.key.split('/', 1)[1]}.smt2"
         write(full, target)
         path = target.as_posix()
-
-    def result(verdict: Verdict, reason: str, rep: Replayed | None = None) -> ProofResult:
-        return _result(spec, verdict, named, spent, reason, path, rep, full.comment)
-
-    vac = build(Arith(None), model, spec, vacuity=True)
-    seconds = timeout * SHARE["vacuity"]
-    ans = check(solver_for(vac, seconds), vac, seconds)
-    spent += ans.seconds
-    if ans.status == "unsat":
-        return result(Verdict.PROVED, f"the case never fires under these readings (vacuous; {spent:.2f} s)")
-    for q in LATTICES:
-        try:
-            lat = build(Arith(q), model, spec, initial=True)
-        except (ValueError, NotEncoded):
-            continue  # a constant off this lattice, or a form searched over the reals only
-        seconds = timeout * LATTICE_SHARE[q]
-        solver = solver_for(lat, seconds)
-        for _ in range(MAX_BLOCKED):
-            ans = check(solver, lat, seconds)
-            spent += ans.seconds
-            if ans.status != "sat":
-                break
-            got = replay(model, spec, ans.positions, lat.focus)
-            if isinstance(got, str):
-                return result(Verdict.INCONCLUSIVE, f"encoding disagreement (lattice q={q}): {got}")
-            if got.initial:
-                return result(Verdict.VIOLATED, _found(got, f"lattice q={q}"), got)
-            block(solver, lat, ans.positions)
-    if spec.form == TWO_MOVERS:
-        return result(
-            Verdict.INCONCLUSIVE,
-            f"no initial counterexample on the lattices q={LATTICES_TEXT}; two-mover obligations "
-            "(every case of both rules, with both robots' witnesses) are not searched over the reals: their real "
-            "form, written to the .smt2 file, is beyond this budget",
-        )
-    seconds = timeout * SHARE["reals"]
-    ans = check(solver_for(full, seconds), full, seconds)
-    spent += ans.seconds
-    if ans.status == "unsat":
-        return result(Verdict.PROVED, "unsat over the reals: holds for swarms of every size (the header's argument)")
-    if ans.status == "unknown":
-        return result(
-            Verdict.INCONCLUSIVE,
-            f"solver: {ans.reason}; no initial counterexample on the lattices q={LATTICES_TEXT}; "
-            "rerun with a larger --timeout",
-        )
-    got = replay(model, spec, ans.positions, full.focus)
-    if isinstance(got, str) and ans.rounded:
-        return result(
-            Verdict.INCONCLUSIVE,
-            f"the solver's counterexample has irrational coordinates and its rational rounding does not reproduce "
-            f"({got}): a boundary case exact rational replay cannot confirm; no initial counterexample on the "
-            f"lattices q={LATTICES_TEXT}",
-        )
-    if isinstance(got, str):
-        return result(Verdict.INCONCLUSIVE, f"encoding disagreement (reals): {got}")
-    if got.initial:
-        return result(Verdict.VIOLATED, _found(got, "reals", ans.rounded), got)
-    seconds = timeout * SHARE["reals-initial"]  # a violation exists: look for an initial one on the reals
-    again = build(Arith(None), model, spec, initial=True)
-    more = check(solver_for(again, seconds), again, seconds)
-    spent += more.seconds
-    if more.status == "sat":
-        found = replay(model, spec, more.positions, again.focus)
-        if isinstance(found, str):
-            return result(Verdict.INCONCLUSIVE, f"encoding disagreement (reals, initial): {found}")
-        if found.initial:
-            return result(Verdict.VIOLATED, _found(found, "reals", more.rounded), found)
-    initial_too = (
-        "none from an initial configuration over the reals"
-        if more.status == "unsat"
-        else f"no initial one on the lattices q={LATTICES_TEXT} or the reals within the budget"
-    )
-    return result(
-        Verdict.INCONCLUSIVE,
-        f"{got.what} in a configuration of {len(got.state)} robots that is not initial ({got.problems[0]}); "
-        f"{initial_too}; whether it is "
-        "reachable is not decided: rerun with a larger --timeout, or check the configuration's swarm size with "
-        "fatline check",
-        got,
-    )
+    search = _Search(model, spec, full, path)
+    for k, budget in enumerate(rounds(timeout)):
+        found = (search.vacuous(budget) if k == 0 else None) or search.lattices(budget)
+        if found is None and spec.form != TWO_MOVERS:
+            found = search.reals(budget)
+        if found is not None:
+            return found
+        if search.done():
+            break
+    return search.give_up(timeout)
 
 
 def _found(got: Replayed, where: str, rounded: bool = False) -> str:
@@ -431,7 +556,7 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
             Lemma.CONNECTIVITY, "global", "any", verdict, k, False, spent, reason, path, doc, full.comment
         )
 
-    attempts = [(k, True, timeout / slots) for k in range(1, slots + 1)] + [(slots, False, timeout)]
+    attempts = [(k, True, timeout / 2 / slots) for k in range(1, slots + 1)] + [(slots, False, timeout / 2)]
     last = None
     for k, initial, limit in attempts:
         obligation = ob.build_global(model, k, initial=initial)
@@ -518,10 +643,11 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-ENCODING_VERSION = 4
+ENCODING_VERSION = 5
 """Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
 role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
-initial search over the reals after a non-initial solution, fsync replays activate every robot."""
+initial search over the reals after a non-initial solution, fsync replays activate every robot;
+5: rounds of growing budget, lattices q = 1, 2, 4, 8, 20, an irrational answer searched past."""
 
 
 __all__ = [

@@ -233,3 +233,27 @@ def test_cvc5_rechecks_every_proved_obligation_from_its_file():
     assert files
     answers = {str(path): _cvc5(path) for path in files}
     assert {a for a in answers.values()} == {"unsat"}, [p for p, a in answers.items() if a != "unsat"][:5]
+
+
+@pytest.mark.parametrize(
+    "timeout, expected",
+    [(1, [1]), (4, [4]), (10, [10]), (11, [2, 9]), (20, [2, 18]), (60, [2, 8, 50]), (300, [2, 8, 32, 258])],
+)
+def test_the_budget_grows_in_rounds_and_is_spent_in_full(timeout, expected):
+    from fatline_verify.prover import rounds
+
+    got = rounds(timeout)
+    assert got == pytest.approx(expected)
+    assert sum(got) == pytest.approx(timeout)
+
+
+def test_a_counterexample_beyond_the_first_round_is_found_in_a_later_one():
+    """Scenario 2, down-2 (paper): no initial collision within the first round's 2 s, one later."""
+    model = make_model()
+    spec = _spec(model, "no-collision/one-mover-scenario-2.down-2")
+    first = isolated(prove_spec, model, spec, timeout=2, out=None)
+    later = isolated(prove_spec, model, spec, timeout=20, out=None)
+    assert first.verdict is Verdict.INCONCLUSIVE
+    assert later.verdict is Verdict.VIOLATED and later.witness is not None
+    run = check_replay(later.witness, model)  # raises unless every value reproduces
+    assert any(v.lemma == "no-collision" for r in run.rounds for v in r.violations)

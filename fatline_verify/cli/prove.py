@@ -30,7 +30,7 @@ MAX_JOBS = 256
 LEMMA_CHOICES = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
 """The lemmas ``--lemma`` offers: :data:`fatline_verify.prover.LEMMAS`, named here without
 importing z3 when the parser is built (a test keeps the two equal)."""
-DEFAULT_SLOTS, DEFAULT_TIMEOUT = 3, 4.0
+DEFAULT_SLOTS, DEFAULT_TIMEOUT = 3, 60.0
 """The prover's defaults (:data:`fatline_verify.prover.DEFAULT_SLOTS`, ``DEFAULT_TIMEOUT``), named here
 without importing z3 (a test keeps them equal)."""
 ALL = "all"
@@ -90,7 +90,10 @@ def register(sub: Any) -> None:
     add_model_argument(p)
     p.add_argument("--lemma", choices=[*(lemma.value for lemma in LEMMA_CHOICES), ALL], default=ALL)
     p.add_argument(
-        "--timeout", type=seconds("timeout"), default=DEFAULT_TIMEOUT, help="solver seconds per obligation (default 4)"
+        "--timeout",
+        type=seconds("timeout"),
+        default=DEFAULT_TIMEOUT,
+        help="solver seconds per obligation, spent in rounds of 2, 8, ... s until an answer (default 60)",
     )
     p.add_argument(
         "--slots",
