@@ -31,6 +31,7 @@ from .options import (
     SearchOrder,
     Uncovered,
     Vacant,
+    is_repaired,
 )
 
 ORIGIN: Point = (0, 0)
@@ -73,6 +74,16 @@ class Rule(StrEnum):
     """``scenario4_guard=all-three-full`` and the guard does not hold: no rule gives a move."""
     SCENARIO_4_PATH_BLOCKED = "scenario-4-path-blocked"
     """``scenario4_free_path=on`` and the path down is not free: "Otherwise it does not move"."""
+    REPAIR_ALIGN = "repair-align"
+    """Not the paper's: ``repair_stack=align``: r sees only A u I, some right of its vertical, and moves there."""
+    REPAIR_CONTRACT = "repair-contract"
+    """Not the paper's: ``repair_stack=align``: the top of a vertical moves down, or its bottom up, to contract it."""
+    REPAIR_APPROACH = "repair-approach"
+    """Not the paper's: ``repair_approach=on``: instead of Scenario 4's drop, r moves right to x_psi - 2."""
+    REPAIR_LOCK = "repair-lock"
+    """Not the paper's: ``repair_lock=left-first`` holds r, which sees a robot before it in (x, y)."""
+    REPAIR_BLOCKED = "repair-blocked"
+    """Not the paper's: ``repair_clear`` or ``repair_edges`` refuse every leg toward r's destination."""
 
 
 class Case(StrEnum):
@@ -93,6 +104,8 @@ STAYING_RULES = frozenset(
         Rule.UNCOVERED_STAY,
         Rule.SCENARIO_4_GUARD_FAILS,
         Rule.SCENARIO_4_PATH_BLOCKED,
+        Rule.REPAIR_LOCK,
+        Rule.REPAIR_BLOCKED,
     }
 )
 
@@ -290,7 +303,18 @@ def free_path(destination: Point, snapshot: Iterable[Point], model: Model) -> bo
 
 
 def decide(snapshot: Sequence[Point], model: Model) -> Decision:
-    """``LineForm()`` for a robot at the origin that sees ``snapshot``: NoMovement, then getDestination."""
+    """``LineForm()`` for a robot at the origin that sees ``snapshot``: NoMovement, then getDestination;
+    then the model's repairs, if it picks any (:mod:`fatline_verify.repairs`; not the paper's)."""
+    decision = paper_decide(snapshot, model)
+    if is_repaired(model.options):
+        from .repairs import repair
+
+        return repair(decision, snapshot, model)
+    return decision
+
+
+def paper_decide(snapshot: Sequence[Point], model: Model) -> Decision:
+    """``LineForm()`` as the paper writes it, under the model's readings."""
     opts = model.options
     classification = tuple((c, classify(c, model)) for c in snapshot)
     present = set().union(*(m for _, m in classification)) if classification else set()

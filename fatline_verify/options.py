@@ -157,6 +157,48 @@ class Goal(StrEnum):
     LINE_MEETS_DISCS = "line-meets-discs"
 
 
+class RepairLock(StrEnum):
+    """Repair: which robots may move in the same round."""
+
+    OFF = "off"
+    LEFT_FIRST = "left-first"
+
+
+class RepairStack(StrEnum):
+    """Repair: what a robot that sees only A u I does."""
+
+    OFF = "off"
+    ALIGN = "align"
+
+
+class RepairApproach(StrEnum):
+    """Repair: what a robot does instead of Scenario 4's drop while psi_right is far."""
+
+    OFF = "off"
+    ON = "on"
+
+
+class RepairStep(StrEnum):
+    """Repair: how far a robot moves in one round."""
+
+    OFF = "off"
+    UNIT = "unit"
+
+
+class RepairClear(StrEnum):
+    """Repair: whether a move must keep clear of every robot r sees."""
+
+    OFF = "off"
+    ON = "on"
+
+
+class RepairEdges(StrEnum):
+    """Repair: whether a move must keep every robot r sees in view."""
+
+    OFF = "off"
+    ON = "on"
+
+
 @dataclass(frozen=True, slots=True)
 class OptionSpec:
     """One open point of the paper: its id, the quoted text, and what each reading means."""
@@ -170,6 +212,12 @@ class OptionSpec:
     only_under: Scheduler | None = None
     """The scheduler under which the option means something (``None``: every scheduler). Under the
     others it is left out of a model's data, so it changes no fingerprint and no trace."""
+
+    @property
+    def repair(self) -> bool:
+        """A change to the algorithm, not a reading of the paper (:mod:`fatline_verify.repairs`): left
+        out of a model's data at ``off``, and not swept."""
+        return self.name.startswith("repair_")
 
 
 def _spec(
@@ -400,6 +448,75 @@ CATALOGUE: dict[str, OptionSpec] = {
                 "line-meets-discs": "some straight line meets every disc",
             },
         ),
+        _spec(
+            "repair_lock",
+            RepairLock,
+            "(a repair, not the paper's) semi-synchronous scheduling where an arbitrary set of robots look, "
+            "compute and move simultaneously",
+            {
+                "off": "the paper: every robot that decides to move may move in the same round",
+                "left-first": "r moves only if it sees no robot strictly left of it, and vertically only if it sees "
+                "none above it on its own vertical: two movers that see each other share a vertical, and only the "
+                "upper one may move vertically",
+            },
+            note="removes: two movers colliding or losing their edge in one round",
+        ),
+        _spec(
+            "repair_stack",
+            RepairStack,
+            "(a repair, not the paper's) If B u C u D u E u F u G is empty and A u I is not empty, r does not move",
+            {
+                "off": "the paper: r stays, though the A and I bands (|x| < 2 under bands=disc) hold robots right "
+                "of r's vertical",
+                "align": "r moves horizontally to the greatest x of the robots it sees (all in A u I), so the "
+                "stack ends on one vertical; a robot on top of a vertical whose moves are all refused moves one "
+                "radius down toward the robot below it",
+            },
+            note="removes: a deadlock of robots in each other's A/I bands but not on one vertical",
+        ),
+        _spec(
+            "repair_approach",
+            RepairApproach,
+            "(a repair, not the paper's) If there is no vacant point ..., then r moves towards either -Y axis",
+            {
+                "off": "the paper: Scenario 4 drops r down its vertical",
+                "on": "while psi_right is more than 2 radii right of r, r moves right to x_psi - 2 instead of dropping",
+            },
+            note="removes: Scenario 4's drop taking r out of the swarm's view when the line is forming to its right",
+        ),
+        _spec(
+            "repair_step",
+            RepairStep,
+            "(a repair, not the paper's) its horizontal movement must be followed by a vertical movement",
+            {
+                "off": "the paper: r moves to its destination in one round",
+                "unit": "r moves at most one radius a round along one axis: horizontally toward its destination "
+                "(or vertically first under path=vertical-then-horizontal), else along the other axis if that "
+                "leg is refused",
+            },
+            note="removes: a move whose path meets a robot r cannot see, and far movers meeting",
+        ),
+        _spec(
+            "repair_clear",
+            RepairClear,
+            "(a repair, not the paper's) A path ... is called free path, if ... is not contained any part of "
+            "another robot",
+            {
+                "off": "the paper: vacancy is tested at the destination only",
+                "on": "a move is allowed only if no robot r sees comes within 2 of its path (per contact)",
+            },
+            note="removes: r's path crossing a robot it sees",
+        ),
+        _spec(
+            "repair_edges",
+            RepairEdges,
+            "(a repair, not the paper's) the robots remain connected (Lemma 1)",
+            {
+                "off": "the paper: a move may take r out of a neighbour's view",
+                "on": "a move is allowed only if it ends within rad_v of every robot r sees",
+            },
+            note="removes: r walking out of a neighbour's view",
+        ),
     ]
 }
 
@@ -427,6 +544,17 @@ class Options:
     timing: Timing = Timing.ANY_SPEED
     contact: Contact = Contact.TOUCH_ALLOWED
     goal: Goal = Goal.VERTICAL_LINE
+    repair_lock: RepairLock = RepairLock.OFF
+    repair_stack: RepairStack = RepairStack.OFF
+    repair_approach: RepairApproach = RepairApproach.OFF
+    repair_step: RepairStep = RepairStep.OFF
+    repair_clear: RepairClear = RepairClear.OFF
+    repair_edges: RepairEdges = RepairEdges.OFF
+
+    @property
+    def repaired(self) -> bool:
+        """Whether any repair (:mod:`fatline_verify.repairs`) is on."""
+        return is_repaired(self)
 
     def with_(self, **changes: str) -> Options:
         """A copy with some readings changed, by option name and reading text; validated."""
@@ -435,17 +563,28 @@ class Options:
 
     def as_dict(self) -> dict[str, str]:
         """Every option that means something under this scheduler and its reading, as text, in catalogue
-        order."""
+        order; a repair only when it is on (the paper's models keep their data)."""
         return {
             name: str(getattr(self, name))
             for name, spec in CATALOGUE.items()
-            if spec.only_under is None or spec.only_under is self.scheduler
+            if (spec.only_under is None or spec.only_under is self.scheduler)
+            and not (spec.repair and getattr(self, name) is spec.default)
         }
 
     def differences(self, other: Options | None = None) -> dict[str, str]:
         """The options whose reading differs from ``other`` (default: from the defaults)."""
         base = {name: str(getattr(other or Options(), name)) for name in CATALOGUE}
         return {k: v for k, v in self.as_dict().items() if base[k] != v}
+
+
+REPAIRS = tuple((name, spec.default) for name, spec in CATALOGUE.items() if spec.repair)
+"""The repair options and their ``off`` readings."""
+
+
+def is_repaired(options: Any) -> bool:
+    """Whether any repair is on, by reading the repair options one by one (so that the sweep's
+    option recorder sees the repair options read, not every option)."""
+    return any(getattr(options, name) is not off for name, off in REPAIRS)
 
 
 def parse_reading(name: str, value: object) -> StrEnum:

@@ -14,7 +14,7 @@ from typing import Any
 
 from .config import Model
 from .outputs import Kind, child, is_output, read_json, write_json
-from .prover import NotEncodedScheduler, ProofResult, Task, prove_fingerprint, task_key, tasks_for
+from .prover import NotEncodedModel, ProofResult, Task, prove_fingerprint, task_key, tasks_for
 from .smt.solving import solver_version
 from .trace import write_trace
 
@@ -86,7 +86,7 @@ class ProofResults:
         """The rows of ``keys`` (default: every row), the model's own obligations first, in task order."""
         try:
             order = [task_key(t) for t in tasks_for(self.model, two_movers=True)]
-        except NotEncodedScheduler:
+        except NotEncodedModel:
             order = []
         wanted = list(self.rows) if keys is None else keys
         rank = {k: i for i, k in enumerate(order)}

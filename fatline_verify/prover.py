@@ -93,8 +93,9 @@ MAX_BLOCKED = 4
 """Non-initial lattice placements blocked per lattice before moving on."""
 
 
-class NotEncodedScheduler(InvalidInput):
-    """``fatline prove`` on a scheduler the obligations do not encode (exit 2, before any work)."""
+class NotEncodedModel(InvalidInput):
+    """``fatline prove`` on a model the obligations do not encode (exit 2, before any work): a scheduler
+    other than :data:`ENCODED`, or a repair (:mod:`fatline_verify.repairs`)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -160,10 +161,17 @@ def rule_groups(cases: Sequence[Case]) -> list[tuple[str, tuple[Case, ...]]]:
 
 
 def check_encoded(model: Model) -> None:
-    """Refuse a scheduler the obligations do not encode: never another scheduler's semantics."""
+    """Refuse a model the obligations do not encode: never another scheduler's semantics, never the
+    paper's rules in place of a repaired rule set."""
+    if model.options.repaired:
+        repairs = ", ".join(f"{k}={v}" for k, v in model.options.as_dict().items() if k.startswith("repair_"))
+        raise NotEncodedModel(
+            f"{repairs}: fatline prove encodes the paper's rules; the repairs of fatline_verify/repairs.py "
+            f"are not encoded yet. Use fatline check {model.name} for this model"
+        )
     scheduler = model.options.scheduler
     if scheduler not in ENCODED:
-        raise NotEncodedScheduler(
+        raise NotEncodedModel(
             f"scheduler={scheduler}: fatline prove encodes rounds in which every mover decides on one shared "
             f"snapshot ({', '.join(s.value for s in ENCODED)}); an asynchronous robot may decide on a stale view. "
             f"Use fatline check {model.name} for this scheduler"

@@ -21,6 +21,17 @@ def sets_of(decision, point):
     return {m for c, m in decision.classification if c == point}.pop()
 
 
+REPAIRED = {
+    "uncovered": "search-both",
+    "repair_lock": "left-first",
+    "repair_stack": "align",
+    "repair_approach": "on",
+    "repair_step": "unit",
+    "repair_clear": "on",
+    "repair_edges": "on",
+}
+"""models/repaired.toml's choices."""
+
 # (id, readings, rad_v, snapshot, expected rule, expected destination, expected case)
 CASES = [
     # NoMovement bullets, in the paper's order.
@@ -201,6 +212,21 @@ CASES = [
         Rule.SCENARIO_4_PATH_BLOCKED,
         (0, 0),
         Case.UNCOVERED,
+    ),
+    # The repairs (not the paper's; fatline_verify/repairs.py), each with every repair on.
+    ("repair-align", REPAIRED, 4, [(1, 2)], Rule.REPAIR_ALIGN, (1, 0), None),
+    ("repair-contract", REPAIRED, 4, [(0, -4)], Rule.REPAIR_CONTRACT, (0, -1), None),
+    ("repair-approach", REPAIRED, 4, [(4, 0)], Rule.REPAIR_APPROACH, (1, 0), Case.UNCOVERED),
+    ("repair-lock", REPAIRED, 4, [(-1, 3), (3, 1)], Rule.REPAIR_LOCK, (0, 0), None),
+    ("repair-step", REPAIRED, 4, [(3, 2)], Rule.SCENARIO_1, (1, 0), None),
+    (
+        "repair-blocked",
+        {"uncovered": "search-both", "repair_clear": "on"},
+        4,
+        [(-1, -3), (2, -1)],
+        Rule.REPAIR_BLOCKED,
+        (0, 0),
+        None,
     ),
 ]
 

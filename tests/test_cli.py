@@ -69,8 +69,10 @@ def test_shipped_models_load_and_differ_as_documented():
     }
     stems = [p.stem for p in shipped_models()]
     assert stems == sorted(stems) and {"paper", "paper-literal"} <= set(stems)
-    for stem in set(stems) - {"paper", "paper-literal"}:  # the variants differ from paper in exactly one reading
+    for stem in set(stems) - {"paper", "paper-literal", "repaired"}:  # the variants differ from paper in one reading
         assert len(load_model(ROOT / "models" / f"{stem}.toml").options.differences()) == 1, stem
+    repaired = load_model(ROOT / "models" / "repaired.toml").options.differences()  # repairs and one reading
+    assert {k for k in repaired if not k.startswith("repair_")} == {"uncovered"} and len(repaired) > 1
 
 
 def test_simulate_writes_a_trace_that_replays(capsys, tmp_path):

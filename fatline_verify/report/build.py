@@ -24,7 +24,7 @@ from ..config import Model, load_model, model_from_mapping, model_to_mapping, sh
 from ..errors import FatlineError
 from ..outputs import TEXT_MARKER, Kind, child, claim_dir, claim_files, is_output, read_json, write_json, write_text
 from ..proof_results import ProofResults
-from ..prover import DEFAULT_SLOTS, DEFAULT_TIMEOUT, NotEncodedScheduler, prove, task_key, tasks_for
+from ..prover import DEFAULT_SLOTS, DEFAULT_TIMEOUT, NotEncodedModel, prove, task_key, tasks_for
 from ..trace import check_replay, load_trace
 from .data import ModelReport
 from .pages import ASSETS, cross_model_html, cross_model_markdown, model_html, model_markdown
@@ -167,7 +167,7 @@ def _refusal(model: Model, proofs: Path, slots: int, timeout: float) -> dict[str
     """For a scheduler the prover does not encode, the prover results document saying so; else ``None``."""
     try:
         tasks_for(model)
-    except NotEncodedScheduler as exc:
+    except NotEncodedModel as exc:
         store = ProofResults(model, proofs, proofs / "traces", slots=slots, timeout=timeout)
         return {**store.document([]), "not_encoded": str(exc)}
     return None

@@ -1,0 +1,226 @@
+"""Named repairs: changes to the paper's algorithm, each removing one class of counterexample.
+
+The paper's ``LineForm()`` (:func:`fatline_verify.algorithm.decide`) is left as it is; a repair
+acts on its decision, after it, and only on a robot that would move. Each repair is an option
+(``repair_*`` in ``options.py``, ``off`` by default: the paper); an option at ``off`` is left out
+of a model's data, so it changes no fingerprint of the paper's models. ``models/repaired.toml``
+picks them.
+
+The repairs and the counterexample class each one removes:
+
+- ``repair_stack = align``: *a deadlock of robots in each other's A/I bands.* Under bands=disc the
+  bands are 4 radii wide, so robots at (0, 0) and (1, 2) each see only A u I and stay ("NoMovement"),
+  though they are not on one vertical. A robot that sees only A u I, some of it right of its
+  vertical, moves horizontally to the greatest x it sees.
+- ``repair_lock = left-first``: *two movers collide or drift apart.* Under SSYNC any set of robots
+  may move at once, and a robot cannot know what a neighbour decides (the neighbour sees robots it
+  does not). A robot moves only if it sees no robot strictly left of it, and moves vertically only
+  if it sees no robot above it on its own vertical. Two movers that see each other are then on one
+  vertical, at most one of them (the upper) moving vertically and the others horizontally, away
+  from the vertical, so their distance does not shrink below 2; any other two movers are farther
+  apart than ``rad_v``. With ``repair_edges``, the top robot moving vertically keeps each robot
+  below it on its vertical in view wherever that robot's one-radius move right may take it.
+- ``repair_approach = on``: *Scenario 4's drop, which leaves the swarm (2 robots 4 apart on a
+  horizontal: r drops 3 and loses the other).* When psi_right has no vacant point within view and r
+  would drop, r moves right instead, to 2 radii short of psi_right (never touching a robot on it),
+  if that is right of r; the search is tried again from there.
+- ``repair_step = unit``: *a move so long that robots r cannot see are in its way, or that two far
+  movers meet.* A robot moves at most one radius a round, along one axis: horizontally toward its
+  destination by ``min(|dx|, 1)``, or, if that leg is not allowed, vertically by ``min(|dy|, 1)``.
+  Every disc that can meet such a path has its centre within 3 < ``rad_v`` of r: r sees it. Two
+  movers farther apart than ``rad_v`` = 4 each move at most 1: they stay more than 2 apart.
+- ``repair_clear = on``: *r's path crosses a robot it sees* (the paper's vacancy tests look at the
+  destination only, and Scenario 1 at none). A leg is allowed only if no visible robot comes closer
+  than 2 to it (contact per the ``contact`` option): r's swept disc meets no disc it sees.
+- ``repair_edges = on``: *r walks out of a neighbour's view* (Scenario 4's drop by ``rad_v - 1``, a
+  far vacancy). A leg is allowed only if, for every robot c r sees, r ends within ``rad_v`` of c,
+  or (under the lock) of a robot b right of r that sees c wherever c may move: b is held by the
+  lock, so an edge r-c that goes is bridged by r-b-c, and the swarm stays connected.
+
+A robot whose every leg is refused stays (``repair-blocked``); one the lock holds stays
+(``repair-lock``). What is left for the checker to judge is whether the repaired robots still make
+progress: every repair only removes moves or shortens them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import replace
+from fractions import Fraction
+
+from .algorithm import ORIGIN, Decision, Rule, _path, _stay
+from .config import Model
+from .geometry import Path, dist2, path_point_dist2
+from .numbers import Number, Point
+from .options import (
+    Contact,
+    PathShape,
+    RepairApproach,
+    RepairClear,
+    RepairEdges,
+    RepairLock,
+    RepairStack,
+    RepairStep,
+)
+
+SCENARIO_4 = (Rule.SCENARIO_4_I_EMPTY, Rule.SCENARIO_4_I_NONEMPTY)
+
+
+def locked(snapshot: Sequence[Point]) -> bool:
+    """``repair_lock = left-first``: r sees a robot strictly left of it."""
+    return any(c[0] < 0 for c in snapshot)
+
+
+def below_another(snapshot: Sequence[Point]) -> bool:
+    """``repair_lock = left-first``: r sees a robot above it on its own vertical. Robots on one vertical
+    may move in the same round (neither is left of the other); only the top one r sees may move
+    vertically, the others horizontally, away from the vertical."""
+    return any(c[0] == 0 and c[1] > 0 for c in snapshot)
+
+
+def _toward(v: Number, rho: int) -> Number:
+    """At most one radius of ``v``, with its sign."""
+    return max(-rho, min(v, rho)) if isinstance(v, int) else max(Fraction(-rho), min(v, Fraction(rho)))
+
+
+def legs(destination: Point, model: Model) -> list[tuple[Point, Path]]:
+    """The moves r may make toward ``destination``, in the order tried: ``(end, path)``.
+
+    Without ``repair_step``, the paper's own move (path per the ``path`` option). With it, one
+    radius along one axis: the horizontal leg first (the paper: "its horizontal movement must be
+    followed by a vertical movement"), unless the path option puts the vertical leg first."""
+    opts = model.options
+    if opts.repair_step is RepairStep.OFF:
+        return [(destination, _path(destination, opts.path))]
+    rho = model.radius
+    dx, dy = destination
+    horizontal: list[Point] = [(_toward(dx, rho), 0)] if dx else []
+    vertical: list[Point] = [(0, _toward(dy, rho))] if dy else []
+    order = vertical + horizontal if opts.path is PathShape.VERTICAL_THEN_HORIZONTAL else horizontal + vertical
+    return [(end, (ORIGIN, end)) for end in order]
+
+
+def allowed(end: Point, path: Path, snapshot: Sequence[Point], model: Model, *, bottom_up: bool = False) -> bool:
+    """Whether a leg passes ``repair_lock`` (no vertical leg beside a robot on r's vertical),
+    ``repair_clear`` and ``repair_edges`` (each only when on)."""
+    opts = model.options
+    lock = opts.repair_lock is RepairLock.LEFT_FIRST
+    if lock and end[0] == 0 and below_another(snapshot) and not bottom_up:
+        return False
+    if opts.repair_clear is RepairClear.ON:
+        limit = model.contact2
+        strict = opts.contact is Contact.STRICT
+        for c in snapshot:
+            d2 = path_point_dist2(path, c)
+            if d2 < limit or (strict and d2 == limit):
+                return False
+    if opts.repair_edges is RepairEdges.OFF:
+        return True
+    return all(_edge_kept(c, end, snapshot, lock, model) for c in snapshot)
+
+
+def _edge_kept(c: Point, end: Point, snapshot: Sequence[Point], lock: bool, model: Model) -> bool:
+    """``repair_edges``: r ends within view of ``c`` wherever ``c`` may be (:func:`_wherever`), or,
+    under the lock, r ends within view of a robot ``b`` right of it (held by the lock: it sees r,
+    which is left of it) that sees ``c`` wherever ``c``'s own move may take it: the edge r-c may
+    go, r and c stay connected through b."""
+    rho = model.radius
+    if all(model.sees(dist2(after, end)) for after in _wherever(c, end, lock, rho)):
+        return True
+    if not lock:
+        return False
+    moves = _anywhere(c, rho)
+    return any(
+        b != c and b[0] > 0 and model.sees(dist2(b, end)) and all(model.sees(dist2(b, after)) for after in moves)
+        for b in snapshot
+    )
+
+
+def _anywhere(c: Point, rho: int) -> tuple[Point, ...]:
+    """Every place a visible robot ``c`` may be after this round under the lock: at rest if it is off
+    r's vertical (right of r, so held; left of r cannot be, or r would be held); on it, one radius
+    right, and one radius up or down if it is above r (it may be the top)."""
+    x, y = c
+    if x != 0:
+        return (c,)
+    return (c, (x + rho, y), *(((x, y + rho), (x, y - rho)) if y > 0 else ()))
+
+
+def _wherever(c: Point, end: Point, lock: bool, rho: int) -> tuple[Point, ...]:
+    """Where a visible robot ``c`` may be after this round, as far as r's edge to it goes.
+
+    At rest, except under the lock when r moves vertically (so r is the top of its vertical) and
+    ``c`` is below r on it: ``c`` may move one radius right. The other pairs on one vertical are
+    covered by the other robot's own test (the top robot moving vertically tests r's horizontal move)
+    or need none (two horizontal moves: the distance is at most the larger of the two tested).
+    Distance is convex along a move, so its ends are enough."""
+    if lock and end[0] == 0 and c[0] == 0 and c[1] < 0:
+        return (c, (c[0] + rho, c[1]))
+    return (c,)
+
+
+def _contract(decision: Decision, snapshot: Sequence[Point], model: Model) -> Decision:
+    """``repair_stack = align``, for a robot that sees only A u I and none right of its vertical: the
+    bottom of its vertical (robots above it, none below) moves one radius up, ending at least 3
+    radii below the robot above (which may come down one radius); the top (robots below, none above)
+    moves one radius down, ending at least 2 above the robot below. Otherwise, or if the move is
+    not allowed, r stays as the paper says."""
+    rho = model.radius
+    above = [c[1] for c in snapshot if c[0] == 0 and c[1] > 0]
+    below = [c[1] for c in snapshot if c[0] == 0 and c[1] < 0]
+    if above and not below and min(above) > 3 * rho:
+        end: Point = (0, min(rho, min(above) - 3 * rho))
+    elif below and not above and max(below) < -2 * rho:
+        end = (0, max(-rho, max(below) + 2 * rho))
+    else:
+        return decision
+    path = (ORIGIN, end)
+    if model.options.repair_lock is RepairLock.LEFT_FIRST and locked(snapshot):
+        return decision
+    if not allowed(end, path, snapshot, model, bottom_up=end[1] > 0):
+        return decision
+    return Decision(Rule.REPAIR_CONTRACT, end, path, decision.classification)
+
+
+def repair(decision: Decision, snapshot: Sequence[Point], model: Model) -> Decision:
+    """The repaired decision: the paper's ``decision`` if it stays; else held by the lock, or the
+    first allowed leg toward its destination, or a stay when no leg is allowed."""
+    if decision.rule is Rule.ONLY_AI and model.options.repair_stack is RepairStack.ALIGN:
+        right = max(c[0] for c in snapshot)
+        if right > 0:
+            destination = (right, 0)
+            decision = Decision(
+                Rule.REPAIR_ALIGN, destination, _path(destination, model.options.path), decision.classification
+            )
+    if decision.rule in SCENARIO_4 and model.options.repair_approach is RepairApproach.ON:
+        assert decision.psi is not None
+        x = decision.psi - 2 * model.radius
+        if x > 0:
+            destination = (x, 0)
+            decision = replace(
+                decision,
+                rule=Rule.REPAIR_APPROACH,
+                destination=destination,
+                path=_path(destination, model.options.path),
+            )
+    if decision.rule is Rule.ONLY_AI and model.options.repair_stack is RepairStack.ALIGN and not decision.moves:
+        return _contract(decision, snapshot, model)
+    if not decision.moves:
+        return decision
+    kw = {"psi": decision.psi, "r_psi": decision.r_psi, "candidates": decision.candidates, "case": decision.case}
+    if model.options.repair_lock is RepairLock.LEFT_FIRST and locked(snapshot):
+        return _stay(Rule.REPAIR_LOCK, decision.classification, **kw)
+    for end, path in legs(decision.destination, model):
+        if allowed(end, path, snapshot, model):
+            return replace(decision, destination=end, path=path)
+    if model.options.repair_stack is RepairStack.ALIGN and not below_another(snapshot):
+        below = [c[1] for c in snapshot if c[0] == 0 and c[1] < 0]
+        if below:  # the top of a vertical contracts it: one radius down toward the robot below
+            end = (0, max(-model.radius, max(below) + 2 * model.radius))
+            path = (ORIGIN, end)
+            if end[1] < 0 and allowed(end, path, snapshot, model):
+                return Decision(Rule.REPAIR_CONTRACT, end, path, decision.classification, **kw)  # type: ignore[arg-type]
+    return _stay(Rule.REPAIR_BLOCKED, decision.classification, **kw)
+
+
+__all__ = ["allowed", "legs", "locked", "repair"]
