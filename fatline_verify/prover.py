@@ -8,7 +8,7 @@ rounds of growing budget (2 s, then 4 times more, the last round taking what is 
 ``--timeout``); each round runs every step still open, each step with its own z3 context and
 deterministic budget:
 
-1. **Vacuity** (first round): if "r makes this case's decision" has no solution over the reals, the
+1. **Vacuity** (until answered): if "r makes this case's decision" has no solution over the reals, the
    case never fires under the model's readings: PROVED, "the case never fires".
 2. **Lattices first**: the named robots on the lattices ``x = X / q`` (q = 1, 2, 4, 8, 20; integer
    arithmetic) with the paper's initial condition on them. A solution is replayed by the executable
@@ -88,6 +88,9 @@ FIRST_ROUND = 2.0
 """The first round's budget in seconds (most obligations are decided in it)."""
 GROWTH = 4
 """Each round's budget is this many times the last one's."""
+
+MIN_CHECK = 0.01
+"""Seconds below which a check is not started."""
 
 MAX_BLOCKED = 4
 """Non-initial lattice placements blocked per lattice before moving on."""
@@ -328,8 +331,9 @@ def rounds(timeout: float) -> list[float]:
 class _Search:
     """One obligation's search, in rounds of growing budget (see :func:`prove_spec`)."""
 
-    def __init__(self, model: Model, spec: Spec, full: Built, path: str) -> None:
+    def __init__(self, model: Model, spec: Spec, full: Built, path: str, timeout: float) -> None:
         self.model, self.spec, self.full, self.path = model, spec, full, path
+        self.timeout = timeout
         self.spent = 0.0
         self.blocked: dict[int, list[Positions]] = {q: [] for q in LATTICES}
         self.off_lattice: set[int] = set()
@@ -343,14 +347,26 @@ class _Search:
         self.irrational: str | None = None
         """Why the reals' counterexample, irrational and rounded, does not reproduce."""
         self.last = ""
+        self.fires = False
+        """Whether "r decides this case" is known to have a solution (vacuity is asked until answered)."""
 
     def result(self, verdict: Verdict, reason: str, rep: Replayed | None = None) -> ProofResult:
         named = len(self.full.bodies) - 1
         return _result(self.spec, verdict, named, self.spent, reason, self.path, rep, self.full.comment)
 
-    def solve(self, built: Built, seconds: float, blocked: Sequence[Positions] = ()) -> Answer:
-        from .smt.solving import block, check, solver_for
+    def left(self) -> float:
+        """Seconds of budget a check may still take: even stopped by the wall clock (at
+        :data:`~fatline_verify.smt.solving.WALL` times its budget), it ends within ``timeout``."""
+        from .smt.solving import WALL
 
+        return max(0.0, self.timeout - self.spent) / WALL
+
+    def solve(self, built: Built, seconds: float, blocked: Sequence[Positions] = ()) -> Answer:
+        from .smt.solving import Answer, block, check, solver_for
+
+        seconds = min(seconds, self.left())
+        if seconds < MIN_CHECK:
+            return Answer("unknown", 0.0, "budget exhausted")
         solver = solver_for(built, seconds)
         for placement in blocked:
             block(solver, built, placement)
@@ -362,11 +378,15 @@ class _Search:
         from .smt.cases import Arith
         from .smt.claims import build
 
+        if self.fires:
+            return None
         vac = build(Arith(None), self.model, self.spec, vacuity=True)
-        if self.solve(vac, budget * SHARE["vacuity"]).status == "unsat":
+        status = self.solve(vac, budget * SHARE["vacuity"]).status
+        if status == "unsat":
             return self.result(
                 Verdict.PROVED, f"the case never fires under these readings (vacuous; {self.spent:.2f} s)"
             )
+        self.fires = status == "sat"
         return None
 
     def lattices(self, budget: float) -> ProofResult | None:
@@ -382,9 +402,12 @@ class _Search:
                 self.off_lattice.add(q)
                 continue
             open_weight = sum(LATTICE_WEIGHT[k] for k in LATTICES if k not in self.off_lattice | self.exhausted)
-            seconds = budget * SHARE["lattices"] * LATTICE_WEIGHT[q] / open_weight
+            left = budget * SHARE["lattices"] * LATTICE_WEIGHT[q] / open_weight  # shared by the blocked retries
             for _ in range(MAX_BLOCKED):
-                ans = self.solve(lat, seconds, self.blocked[q])
+                if left < MIN_CHECK:
+                    break
+                ans = self.solve(lat, left, self.blocked[q])
+                left -= ans.seconds
                 if ans.status == "unsat":
                     self.exhausted.add(q)
                 if ans.status != "sat":
@@ -500,14 +523,14 @@ def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) ->
         target = out / spec.lemma / f"{spec.key.split('/', 1)[1]}.smt2"
         write(full, target)
         path = target.as_posix()
-    search = _Search(model, spec, full, path)
-    for k, budget in enumerate(rounds(timeout)):
-        found = (search.vacuous(budget) if k == 0 else None) or search.lattices(budget)
+    search = _Search(model, spec, full, path, timeout)
+    for budget in rounds(timeout):
+        found = search.vacuous(budget) or search.lattices(budget)
         if found is None and spec.form != TWO_MOVERS:
             found = search.reals(budget)
         if found is not None:
             return found
-        if search.done():
+        if search.done() or search.left() < MIN_CHECK:
             break
     return search.give_up(timeout)
 
@@ -651,11 +674,13 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-ENCODING_VERSION = 5
+ENCODING_VERSION = 6
 """Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
 role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
 initial search over the reals after a non-initial solution, fsync replays activate every robot;
-5: rounds of growing budget, lattices q = 1, 2, 4, 8, 20, an irrational answer searched past."""
+5: rounds of growing budget, lattices q = 1, 2, 4, 8, 20, an irrational answer searched past;
+6: an obligation's checks end within its budget (blocked retries share their lattice's share), and
+vacuity is asked in every round until answered."""
 
 
 __all__ = [

@@ -19,6 +19,9 @@ RLIMIT_PER_SECOND = 2_000_000
 """z3 resource units per second of budget. Measured here: 1 to 4 million units a second depending
 on the obligation, so the deterministic limit normally stops a check before the clock does."""
 
+WALL = 1.5
+"""The wall clock stops a check at this many times its budget (a check without resource counting)."""
+
 Positions = dict[str, tuple[Fraction, Fraction]]
 
 
@@ -63,7 +66,7 @@ def solver_for(built: Built, seconds: float) -> z3.Solver:
     """A solver holding the obligation (and its lattice bounds), with a budget of ``seconds``."""
     solver = z3.Solver(ctx=built.ar.ctx)
     solver.set("rlimit", rlimit(seconds))
-    solver.set("timeout", int(1.5 * seconds * 1000))
+    solver.set("timeout", int(WALL * seconds * 1000))
     solver.add(*built.assertions, *built.bounds)
     return solver
 
