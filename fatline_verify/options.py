@@ -513,7 +513,8 @@ CATALOGUE: dict[str, OptionSpec] = {
             "(a repair, not the paper's) the robots remain connected (Lemma 1)",
             {
                 "off": "the paper: a move may take r out of a neighbour's view",
-                "on": "a move is allowed only if it ends within rad_v of every robot r sees",
+                "on": "a move is allowed only if it ends within rad_v of every robot r sees, or (with "
+                "repair_lock) of a robot right of r, held by the lock, that sees that robot wherever it may move",
             },
             note="removes: r walking out of a neighbour's view",
         ),
