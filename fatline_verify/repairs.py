@@ -37,9 +37,13 @@ The repairs and the counterexample class each one removes:
   or (under the lock) of a robot b right of r that sees c wherever c may move: b is held by the
   lock, so an edge r-c that goes is bridged by r-b-c, and the swarm stays connected.
 
-A robot whose every leg is refused stays (``repair-blocked``); one the lock holds stays
-(``repair-lock``). What is left for the checker to judge is whether the repaired robots still make
-progress: every repair only removes moves or shortens them.
+``repair_stack = align`` also contracts a vertical: a robot that sees only robots on its own vertical
+above it (the bottom) moves one radius up, ending at least 3 below the nearest (which may come down
+one radius), and the top (robots below only) moves down, ending at least 2 above the nearest: the
+bottom's margin keeps the two apart when both move, and only these two robots of a vertical ever
+move vertically. A robot whose every leg is refused stays (``repair-blocked``), or, on top of its
+vertical, contracts it; one the lock holds stays (``repair-lock``). What is left for the checker to
+judge is whether the repaired robots still make progress: most repairs remove moves or shorten them.
 """
 
 from __future__ import annotations
@@ -101,8 +105,8 @@ def legs(destination: Point, model: Model) -> list[tuple[Point, Path]]:
 
 
 def allowed(end: Point, path: Path, snapshot: Sequence[Point], model: Model, *, bottom_up: bool = False) -> bool:
-    """Whether a leg passes ``repair_lock`` (no vertical leg beside a robot on r's vertical),
-    ``repair_clear`` and ``repair_edges`` (each only when on)."""
+    """Whether a leg passes ``repair_lock`` (no vertical leg below another robot on r's vertical, but
+    the bottom's contraction, ``bottom_up``), ``repair_clear`` and ``repair_edges`` (each only when on)."""
     opts = model.options
     lock = opts.repair_lock is RepairLock.LEFT_FIRST
     if lock and end[0] == 0 and below_another(snapshot) and not bottom_up:
@@ -149,12 +153,13 @@ def _anywhere(c: Point, rho: int) -> tuple[Point, ...]:
 def _wherever(c: Point, end: Point, lock: bool, rho: int) -> tuple[Point, ...]:
     """Where a visible robot ``c`` may be after this round, as far as r's edge to it goes.
 
-    At rest, except under the lock when r moves vertically (so r is the top of its vertical) and
-    ``c`` is below r on it: ``c`` may move one radius right. The other pairs on one vertical are
-    covered by the other robot's own test (the top robot moving vertically tests r's horizontal move)
-    or need none (two horizontal moves: the distance is at most the larger of the two tested).
-    Distance is convex along a move, so its ends are enough."""
-    if lock and end[0] == 0 and c[0] == 0 and c[1] < 0:
+    At rest, except under the lock when r moves vertically (the top of its vertical, or its bottom
+    contracting it) and ``c`` is on r's vertical: ``c`` may move one radius right. The other pairs on
+    one vertical are covered by the other robot's own test (the robot moving vertically tests r's
+    move right) or need none (two moves right: the distance is at most the larger of the two
+    tested; a move toward r only shortens the edge). Distance is convex along a move, so its ends
+    are enough."""
+    if lock and end[0] == 0 and c[0] == 0:
         return (c, (c[0] + rho, c[1]))
     return (c,)
 
