@@ -61,6 +61,7 @@ from .smt.claims import (
     Spec,
     argument,
 )
+from .smt.legs import LegSpec, leg_specs, missing_repairs
 from .swarm import initial_problems
 from .trace import replayed_document
 
@@ -152,7 +153,8 @@ class GlobalTask:
         return f"{self.lemma}/{GLOBAL}-any"
 
 
-Task = Spec | GlobalTask
+Task = Spec | GlobalTask | LegSpec
+"""An obligation: a decision case of the paper's rules, the global form, or a repaired rule set's leg."""
 
 
 def rule_groups(cases: Sequence[Case]) -> list[tuple[str, tuple[Case, ...]]]:
@@ -165,13 +167,7 @@ def rule_groups(cases: Sequence[Case]) -> list[tuple[str, tuple[Case, ...]]]:
 
 def check_encoded(model: Model) -> None:
     """Refuse a model the obligations do not encode: never another scheduler's semantics, never the
-    paper's rules in place of a repaired rule set."""
-    if model.options.repaired:
-        repairs = ", ".join(f"{k}={v}" for k, v in model.options.as_dict().items() if k.startswith("repair_"))
-        raise NotEncodedModel(
-            f"{repairs}: fatline prove encodes the paper's rules; the repairs of fatline_verify/repairs.py "
-            f"are not encoded yet. Use fatline check {model.name} for this model"
-        )
+    paper's rules in place of a repaired rule set the leg obligations do not cover."""
     scheduler = model.options.scheduler
     if scheduler not in ENCODED:
         raise NotEncodedModel(
@@ -179,6 +175,25 @@ def check_encoded(model: Model) -> None:
             f"snapshot ({', '.join(s.value for s in ENCODED)}); an asynchronous robot may decide on a stale view. "
             f"Use fatline check {model.name} for this scheduler"
         )
+    if model.options.repaired:
+        missing = missing_repairs(model)
+        if missing:
+            raise NotEncodedModel(
+                f"{', '.join(missing)} not set: fatline prove encodes a repaired rule set by its legs, which rest "
+                f"on the lock, unit steps, clear paths and kept edges together. Set them, or use fatline check "
+                f"{model.name}"
+            )
+
+
+def paper_part(model: Model) -> Model:
+    """The paper's rules under ``model``'s readings (its repairs off): what the per-case obligations
+    of a repaired model encode (a repaired move is a leg toward their destination, or a repair's own)."""
+    if not model.options.repaired:
+        return model
+    from dataclasses import replace
+
+    off = {name: "off" for name in model.options.as_dict() if name.startswith("repair_")}
+    return replace(model, options=model.options.with_(**off))
 
 
 def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: bool = False) -> list[Task]:
@@ -187,6 +202,8 @@ def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: b
     ``two_movers``: also the two-mover obligations (one per pair of rules; searched on the lattices
     only, as their real form is beyond the budgets tried), which ``fatline prove --two-movers`` asks for."""
     check_encoded(model)
+    if model.options.repaired:
+        return _repaired_tasks(model, lemmas)
     scheduler = model.options.scheduler
     moving = moving_cases(model)
     stays = tuple(staying_cases(model)) if scheduler is Scheduler.FSYNC else ()
@@ -203,6 +220,22 @@ def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: b
         if lemma is Lemma.CONNECTIVITY:
             tasks += [Spec.of(lemma, CLOSER, c) for c in moving if c.rule.value in CLOSER_RULES]
             tasks.append(GlobalTask())
+        if lemma is Lemma.RMA_FIXED:
+            tasks += [Spec.of(lemma, SEEN, c) for c in moving]
+        if lemma is Lemma.APPROACH:
+            tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
+    return tasks
+
+
+def _repaired_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
+    """A repaired model's obligations: the leg obligations of the collision and connectivity lemmas
+    (:mod:`fatline_verify.smt.legs`), and the per-case claims ``seen`` and ``x-nondecreasing`` of the
+    paper's rules under its readings (:func:`paper_part`; the legs' rightward horizontal rests on
+    the latter)."""
+    moving = moving_cases(paper_part(model))
+    tasks: list[Task] = []
+    for lemma in lemmas:
+        tasks += leg_specs((lemma,))
         if lemma is Lemma.RMA_FIXED:
             tasks += [Spec.of(lemma, SEEN, c) for c in moving]
         if lemma is Lemma.APPROACH:
@@ -647,13 +680,17 @@ def prove(
     if not tasks:
         return []
     check_encoded(model)
+    from .leg_prover import prove_leg
+
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
-    calls = [
-        (prove_spec, (model, task), {"timeout": timeout, "out": out})
-        if isinstance(task, Spec)
-        else (prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out})
-        for task in tasks
-    ]
+    calls: list[tuple[Callable[..., ProofResult], tuple[Any, ...], dict[str, Any]]] = []
+    for task in tasks:
+        if isinstance(task, LegSpec):
+            calls.append((prove_leg, (model, task), {"timeout": timeout, "out": out}))
+        elif isinstance(task, Spec):
+            calls.append((prove_spec, (paper_part(model), task), {"timeout": timeout, "out": out}))
+        else:
+            calls.append((prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out}))
     results: list[ProofResult | None] = [None] * len(tasks)
 
     def done(k: int, result: ProofResult) -> None:
@@ -674,13 +711,13 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-ENCODING_VERSION = 6
+ENCODING_VERSION = 7
 """Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
 role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
 initial search over the reals after a non-initial solution, fsync replays activate every robot;
 5: rounds of growing budget, lattices q = 1, 2, 4, 8, 20, an irrational answer searched past;
 6: an obligation's checks end within its budget (blocked retries share their lattice's share), and
-vacuity is asked in every round until answered."""
+vacuity is asked in every round until answered; 7: the repaired rule set's leg obligations."""
 
 
 __all__ = [

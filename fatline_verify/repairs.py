@@ -50,6 +50,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import replace
+from enum import StrEnum
 from fractions import Fraction
 
 from .algorithm import ORIGIN, Decision, Rule, _path, _stay
@@ -68,6 +69,30 @@ from .options import (
 )
 
 SCENARIO_4 = (Rule.SCENARIO_4_I_EMPTY, Rule.SCENARIO_4_I_NONEMPTY)
+
+
+class Leg(StrEnum):
+    """The class of a repaired move (``repair_step = unit``), whatever rule chose it: what
+    ``fatline prove`` reasons about for the repaired rule set (:mod:`fatline_verify.smt.legs`)."""
+
+    HORIZONTAL = "horizontal"
+    """One radius or less along the x axis."""
+    TOP = "top"
+    """One radius or less along the y axis, seeing no robot above on its own vertical (a vertical leg
+    of a paper rule, or the top's contraction)."""
+    BOTTOM = "bottom"
+    """One radius or less up, seeing robots above on its own vertical and none below, ending at least 3
+    radii below each (the bottom's contraction)."""
+
+
+def leg_of(destination: Point, snapshot: Sequence[Point]) -> Leg:
+    """The class of a repaired move to ``destination`` (relative, one axis) from ``snapshot``."""
+    dx, dy = destination
+    if dx and dy:
+        raise ValueError(f"a move to {destination} is not along one axis (repair_step = unit makes legs)")
+    if not dy:
+        return Leg.HORIZONTAL
+    return Leg.BOTTOM if below_another(snapshot) else Leg.TOP
 
 
 def locked(snapshot: Sequence[Point]) -> bool:
@@ -228,4 +253,4 @@ def repair(decision: Decision, snapshot: Sequence[Point], model: Model) -> Decis
     return _stay(Rule.REPAIR_BLOCKED, decision.classification, **kw)
 
 
-__all__ = ["allowed", "legs", "locked", "repair"]
+__all__ = ["Leg", "allowed", "leg_of", "legs", "locked", "repair"]

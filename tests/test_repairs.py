@@ -10,9 +10,7 @@ from hypothesis import strategies as st
 
 from fatline_verify.algorithm import Rule, decide, paper_decide
 from fatline_verify.config import load_model, model_to_mapping, shipped_models
-from fatline_verify.errors import InvalidInput
 from fatline_verify.options import CATALOGUE, Options
-from fatline_verify.prover import tasks_for
 from fatline_verify.schedule import play_round
 from fatline_verify.swarm import is_connected
 from tests.conftest import make_model
@@ -89,15 +87,14 @@ def test_a_stack_contracts_from_the_top_and_the_bottom():
     assert not decide(((0, 3),), repaired()).moves  # 3 apart: the bottom waits for the top
 
 
-def test_the_prover_refuses_a_repaired_model_in_one_line(capsys, tmp_path):
+def test_the_prover_proves_the_repaired_collision_lemma_for_every_swarm_size(capsys, tmp_path):
+    """``fatline prove repaired``: the leg obligations (tests/test_legs.py) come out PROVED, exit 0."""
     from fatline_verify.cli import main
 
-    with pytest.raises(InvalidInput, match=r"repair_lock=left-first.*not encoded"):
-        tasks_for(repaired())
-    assert main(["prove", "repaired", "--out", str(tmp_path / "p"), "-q"]) == 2
-    err = capsys.readouterr().err.strip()
-    assert "not encoded" in err and len(err.splitlines()) == 1
-    assert not (tmp_path / "p").exists()
+    assert main(["prove", "repaired", "--lemma", "no-collision", "--out", str(tmp_path / "p"), "-q"]) == 0
+    out = capsys.readouterr().out
+    assert "no-collision: 9 obligations: 9 PROVED" in out
+    assert len(list((tmp_path / "p" / "repaired" / "no-collision").glob("*.smt2"))) == 9
 
 
 @st.composite

@@ -108,7 +108,7 @@ class Built:
     bounds: list[z3.BoolRef] = field(default_factory=list)
 
 
-def _pt_seg_close(ar: Arith, model: Model, p: Pt, a: Pt, b: Pt) -> z3.BoolRef:
+def segment_close(ar: Arith, model: Model, p: Pt, a: Pt, b: Pt) -> z3.BoolRef:
     """Closed form: the point ``p`` comes within 2 of the segment ``ab`` (per ``contact``)."""
     vx, vy = b[0] - a[0], b[1] - a[1]
     wx, wy = p[0] - a[0], p[1] - a[1]
@@ -131,30 +131,30 @@ def _orient(a: Pt, b: Pt, c: Pt) -> z3.ArithRef:
     return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 
 
-def _capsules_close(ar: Arith, model: Model, ab: tuple[Pt, Pt], cd: tuple[Pt, Pt]) -> z3.BoolRef:
+def capsules_close(ar: Arith, model: Model, ab: tuple[Pt, Pt], cd: tuple[Pt, Pt]) -> z3.BoolRef:
     """Closed form: two segments come within 2 (they cross, or an end point is within 2 of the other)."""
     (a, b), (c, d) = ab, cd
     zero = ar.num(0)
     crosses = z3.And(_orient(a, b, c) * _orient(a, b, d) < zero, _orient(c, d, a) * _orient(c, d, b) < zero)
     return z3.Or(
         crosses,
-        _pt_seg_close(ar, model, a, c, d),
-        _pt_seg_close(ar, model, b, c, d),
-        _pt_seg_close(ar, model, c, a, b),
-        _pt_seg_close(ar, model, d, a, b),
+        segment_close(ar, model, a, c, d),
+        segment_close(ar, model, b, c, d),
+        segment_close(ar, model, c, a, b),
+        segment_close(ar, model, d, a, b),
     )
 
 
 def _movers_close(ar: Arith, model: Model, r: Pt, dr: Decided, s: Pt, ds: Decided) -> z3.BoolRef:
     mine, theirs = dr.pieces(r), ds.pieces(s)
     if model.options.timing is Timing.ANY_SPEED:
-        return ar.any([_capsules_close(ar, model, p, q) for p in mine for q in theirs])
+        return ar.any([capsules_close(ar, model, p, q) for p in mine for q in theirs])
     if model.options.path is not PathShape.STRAIGHT:
         return _lockstep_l(ar, model, r, dr, s, ds)
     # lockstep on straight segments: the relative position moves on a segment; its distance to 0
     d0 = (r[0] - s[0], r[1] - s[1])
     d1 = (dr.dest[0] - ds.dest[0], dr.dest[1] - ds.dest[1])
-    return _pt_seg_close(ar, model, ar.origin(), d0, d1)
+    return segment_close(ar, model, ar.origin(), d0, d1)
 
 
 def _lockstep_l(ar: Arith, model: Model, r: Pt, dr: Decided, s: Pt, ds: Decided) -> z3.BoolRef:
@@ -278,7 +278,7 @@ def _violation(
     if form == ONE_MOVER:
         assert o is not None
         if lemma is Lemma.NO_COLLISION:
-            return ar.any([_pt_seg_close(ar, model, o, a, b) for a, b in dr.pieces(r)])
+            return ar.any([segment_close(ar, model, o, a, b) for a, b in dr.pieces(r)])
         return z3.And(sees(ar, model, r, o), z3.Not(sees(ar, model, dr.dest, o)))
     if form == TWO_MOVERS:
         assert s is not None and ds is not None
@@ -323,7 +323,7 @@ def _initial(
     return out
 
 
-__all__ = ["Built", "NotEncoded", "Spec", "build"]
+__all__ = ["Built", "NotEncoded", "Spec", "build", "capsules_close", "segment_close"]
 
 
 def argument(model: Model, spec: Spec, built: Built) -> str:
