@@ -711,13 +711,14 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-ENCODING_VERSION = 7
+ENCODING_VERSION = 6
 """Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
 role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
 initial search over the reals after a non-initial solution, fsync replays activate every robot;
 5: rounds of growing budget, lattices q = 1, 2, 4, 8, 20, an irrational answer searched past;
 6: an obligation's checks end within its budget (blocked retries share their lattice's share), and
-vacuity is asked in every round until answered; 7: the repaired rule set's leg obligations."""
+vacuity is asked in every round until answered. (The repaired rule set's leg obligations were added
+under 6: new obligations, no existing one changed.)"""
 
 
 __all__ = [
