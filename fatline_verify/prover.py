@@ -185,6 +185,14 @@ def check_encoded(model: Model) -> None:
             )
 
 
+PAPER_PART_NOTE = (
+    "Repaired model: these are the paper's rules under its readings, its repairs off. A repaired move is one leg "
+    "toward their destination (never farther right, never left of r), or a repair's own: repair-align to the "
+    "greatest x r sees, repair-approach 2 radii short of psi_right (right of r), repair-contract vertical."
+)
+"""The header line of a repaired model's per-case obligations: what they say of the repaired rules."""
+
+
 def paper_part(model: Model) -> Model:
     """The paper's rules under ``model``'s readings (its repairs off): what the per-case obligations
     of a repaired model encode (a repaired move is a leg toward their destination, or a repair's own)."""
@@ -536,7 +544,7 @@ class _Search:
         )
 
 
-def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) -> ProofResult:
+def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None, note: str = "") -> ProofResult:
     """Decide one obligation (see the module docstring); write its real-number form under ``out``.
 
     The search runs in rounds of growing budget (:func:`rounds`), each round every step that is still
@@ -550,7 +558,7 @@ def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None) ->
         full = build(Arith(None), model, spec)
     except NotEncoded as exc:
         return _result(spec, Verdict.INCONCLUSIVE, 0, 0.0, f"not encoded: {exc}", "", None)
-    full.comment = argument(model, spec, full)
+    full.comment = argument(model, spec, full) + (f"\n{note}" if note else "")
     path = ""
     if out is not None:
         target = out / spec.lemma / f"{spec.key.split('/', 1)[1]}.smt2"
@@ -688,7 +696,8 @@ def prove(
         if isinstance(task, LegSpec):
             calls.append((prove_leg, (model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, Spec):
-            calls.append((prove_spec, (paper_part(model), task), {"timeout": timeout, "out": out}))
+            note = PAPER_PART_NOTE if model.options.repaired else ""
+            calls.append((prove_spec, (paper_part(model), task), {"timeout": timeout, "out": out, "note": note}))
         else:
             calls.append((prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out}))
     results: list[ProofResult | None] = [None] * len(tasks)

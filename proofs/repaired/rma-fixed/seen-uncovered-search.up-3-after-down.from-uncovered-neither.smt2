@@ -4,6 +4,7 @@
 ; Named robots: r, r.w, r.c, r.k-1, r.k-2, r.k-3, r.k-4, r.k+1, r.k+2 (r at the origin). Two names are one robot iff their centres are equal; distinct robots are disjoint discs. Universal conditions are asserted for every named robot the decider sees.
 ; Why unsat covers swarms of every size: in any swarm where the claim fails with r in this case, the robots playing the named roles (they exist: the case's witnesses, the robot the claim is about) satisfy every constraint here, because the universal conditions hold for every robot of the swarm. So unsat means no swarm, of any size, breaks the claim in this case. (Conversely a solution's named robots make the same decisions: universal conditions hold in every sub-swarm; tests/test_cases.py checks this on random and crowded swarms.)
 ; Assumptions: exact real arithmetic; unit discs; one shared snapshot per round.
+; Repaired model: these are the paper's rules under its readings, its repairs off. A repaired move is one leg toward their destination (never farther right, never left of r), or a repair's own: repair-align to the greatest x r sees, repair-approach 2 radii short of psi_right (right of r), repair-contract vertical.
 (set-logic QF_NRA)
 (declare-fun r.w.y () Real)
 (declare-fun r.w.x () Real)
