@@ -26,6 +26,7 @@ from ..outputs import TEXT_MARKER, Kind, child, claim_dir, claim_files, is_outpu
 from ..proof_results import ProofResults
 from ..prover import DEFAULT_SLOTS, DEFAULT_TIMEOUT, NotEncodedModel, prove, task_key, tasks_for
 from ..trace import check_replay, load_trace
+from .against_pages import against_entries
 from .data import ModelReport
 from .pages import ASSETS, cross_model_html, cross_model_markdown, model_html, model_markdown
 from .pictures import frames
@@ -120,7 +121,8 @@ def build_report(
         if progress:
             progress(f"{model.name}: pictures")
         traces = _collect(model, out, check_data, prove_data, draw=True)
-        report = ModelReport(model, check_data, prove_data, traces)
+        against = against_entries(model, out, _write_page)
+        report = ModelReport(model, check_data, prove_data, traces, against)
         _write_page(out / model.name / "README.md", model_markdown(report))
         _write_page(out / model.name / "index.html", model_html(report))
         reports.append(report)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from ..config import Model
@@ -17,3 +17,5 @@ class ModelReport:
     prove: dict[str, Any]
     traces: list[dict[str, Any]]
     """Per trace: name, path (relative to the report root), source, lemma, summary, frame files, the document."""
+    against: list[dict[str, Any]] = field(default_factory=list)
+    """A repaired model: the corpus of the other models under it (:mod:`fatline_verify.report.against_pages`)."""

@@ -18,6 +18,7 @@ from ..options import CATALOGUE
 from ..properties import CHECKED, Lemma
 from ..systems import system_for
 from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, prove_row, violation_line
+from .against_pages import against_html, against_markdown
 from .data import ModelReport
 
 RANK = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
@@ -260,6 +261,7 @@ def model_markdown(report: ModelReport) -> str:
     lines += ["## Prover (z3, any swarm size)", "", f"Solver: {report.prove['solver']}.", ""]
     unproved = _not_encoded(report)
     lines += [unproved, ""] if unproved else [*_md_table(PROVE_HEAD, _prove_rows(report)), ""]
+    lines += against_markdown(report.against)
     lines += ["## Counterexamples", "", "Long numbers are rounded (≈); the trace files hold them exactly.", ""]
     for t in report.traces:
         lines += [
@@ -336,6 +338,7 @@ def model_html(report: ModelReport) -> str:
         f"<p>{html.escape(_not_encoded(report))}</p>"
         if _not_encoded(report)
         else _html_table(PROVE_HEAD, _prove_rows(report), verdict_col=3),
+        *([against_html(report.against)] if report.against else []),
         "<h2>Counterexamples</h2>",
     ]
     parts += [viewer(t) for t in report.traces]
