@@ -628,9 +628,18 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
             Lemma.CONNECTIVITY, "global", "any", verdict, k, False, spent, reason, path, doc, full.comment
         )
 
+    from .smt.solving import WALL
+
     attempts = [(k, True, timeout / 2 / slots) for k in range(1, slots + 1)] + [(slots, False, timeout / 2)]
     last = None
-    for k, initial, limit in attempts:
+    for k, initial, planned in attempts:
+        limit = min(planned, max(0.0, timeout - spent)) / WALL  # even stopped by the wall clock, within timeout
+        if limit < MIN_CHECK:
+            return result(
+                Verdict.INCONCLUSIVE,
+                k,
+                f"budget exhausted before the {k + 1}-robot attempt; rerun with a larger --timeout",
+            )
         obligation = ob.build_global(model, k, initial=initial)
         ans = ob.solve(obligation, limit)
         spent += ans.seconds

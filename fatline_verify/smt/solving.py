@@ -58,7 +58,7 @@ def unknown_reason(solver: z3.Solver, seconds: float) -> str:
     """Why a check answered unknown: the budget, said in the user's terms, or z3's own reason."""
     reason = str(solver.reason_unknown())
     if any(word in reason for word in ("resource", "timeout", "canceled")):
-        return f"budget exhausted (rlimit {rlimit(seconds):,}, about {seconds:g} s)"
+        return f"budget exhausted (rlimit {rlimit(seconds):,}, about {seconds:.1f} s)"
     return reason
 
 
