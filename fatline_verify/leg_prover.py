@@ -20,7 +20,7 @@ from typing import Any
 from .config import Model
 from .numbers import Point, show_point
 from .properties import Lemma, Verdict
-from .prover import MIN_CHECK, ProofResult, rounds
+from .prover import MIN_CHECK, ProofResult, rounds, rounds_text
 from .repairs import leg_of
 from .schedule import Collision, decide_all, lost_edges, play_round, snapshot
 from .simulate import Outcome, Run, outcome_after
@@ -44,14 +44,14 @@ def prove_leg(model: Model, spec: LegSpec, *, timeout: float, out: Path | None) 
         target = out / spec.lemma / f"{spec.key.split('/', 1)[1]}.smt2"
         write(full, target)
         path = target.as_posix()
-    spent, fires, last = 0.0, False, "budget exhausted"
+    spent, wall, fires, last = 0.0, 0.0, False, "budget exhausted"
 
     def result(
         verdict: Verdict, reason: str, doc: dict[str, Any] | None = None, config: tuple[str, ...] = ()
     ) -> ProofResult:
         named = len([n for n in full.bodies if not n.endswith("'")]) - 1
         return ProofResult(
-            spec.lemma, spec.form, "any", verdict, named, True, spent, reason, path, doc, full.comment,
+            spec.lemma, spec.form, "any", verdict, named, True, wall, reason, path, doc, full.comment,
             spec.name, spec.other, config,
         )  # fmt: skip
 
@@ -61,15 +61,15 @@ def prove_leg(model: Model, spec: LegSpec, *, timeout: float, out: Path | None) 
             vac = build(Arith(None), model, spec, vacuity=True)
             seconds = min(budget * VACUITY_SHARE, left)
             ans = check(solver_for(vac, seconds), vac, seconds)
-            spent += ans.seconds
+            spent, wall = spent + ans.budget, wall + ans.seconds
             if ans.status == "unsat":
-                return result(Verdict.PROVED, f"these legs never occur together (vacuous; {spent:.2f} s)")
+                return result(Verdict.PROVED, "these legs never occur together (vacuous)")
             fires = ans.status == "sat"
         seconds = min(budget * (1 - (0 if fires else VACUITY_SHARE)), max(0.0, timeout - spent) / WALL)
         if seconds < MIN_CHECK:
             break
         ans = check(solver_for(full, seconds), full, seconds)
-        spent += ans.seconds
+        spent, wall = spent + ans.budget, wall + ans.seconds
         if ans.status == "unsat":
             return result(
                 Verdict.PROVED, "unsat over the reals: holds for swarms of every size (the header's argument)"
@@ -80,8 +80,7 @@ def prove_leg(model: Model, spec: LegSpec, *, timeout: float, out: Path | None) 
         last = ans.reason
     return result(
         Verdict.INCONCLUSIVE,
-        f"solver: {last} in the last of {len(rounds(timeout))} rounds ({timeout:g} s in all); "
-        "rerun with a larger --timeout",
+        f"solver: {last} {rounds_text(timeout)}; rerun with a larger --timeout",
     )
 
 

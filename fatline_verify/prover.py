@@ -369,6 +369,12 @@ def rounds(timeout: float) -> list[float]:
     return budgets
 
 
+def rounds_text(timeout: float) -> str:
+    """Where an exhausted budget ran out: ``in the last of 3 rounds (60 s in all)``."""
+    n = len(rounds(timeout))
+    return f"in the last of {n} rounds ({timeout:g} s in all)" if n > 1 else f"in its one round of {timeout:g} s"
+
+
 class _Search:
     """One obligation's search, in rounds of growing budget (see :func:`prove_spec`)."""
 
@@ -376,6 +382,9 @@ class _Search:
         self.model, self.spec, self.full, self.path = model, spec, full, path
         self.timeout = timeout
         self.spent = 0.0
+        """Budget used, in z3 resource units as seconds (deterministic: it decides what is left)."""
+        self.wall = 0.0
+        """Wall-clock seconds of the checks (reported, never deciding)."""
         self.blocked: dict[int, list[Positions]] = {q: [] for q in LATTICES}
         self.off_lattice: set[int] = set()
         """Lattices the obligation cannot be put on (a constant off it), or a form searched over the reals only."""
@@ -393,11 +402,12 @@ class _Search:
 
     def result(self, verdict: Verdict, reason: str, rep: Replayed | None = None) -> ProofResult:
         named = len(self.full.bodies) - 1
-        return _result(self.spec, verdict, named, self.spent, reason, self.path, rep, self.full.comment)
+        return _result(self.spec, verdict, named, self.wall, reason, self.path, rep, self.full.comment)
 
     def left(self) -> float:
-        """Seconds of budget a check may still take: even stopped by the wall clock (at
-        :data:`~fatline_verify.smt.solving.WALL` times its budget), it ends within ``timeout``."""
+        """Seconds of budget a check may still take: the budget not yet used (z3's resource count,
+        so the same on every run), divided by :data:`~fatline_verify.smt.solving.WALL` so that even
+        checks stopped by the wall clock end about within ``timeout``."""
         from .smt.solving import WALL
 
         return max(0.0, self.timeout - self.spent) / WALL
@@ -412,7 +422,8 @@ class _Search:
         for placement in blocked:
             block(solver, built, placement)
         ans = check(solver, built, seconds)
-        self.spent += ans.seconds
+        self.spent += ans.budget
+        self.wall += ans.seconds
         return ans
 
     def vacuous(self, budget: float) -> ProofResult | None:
@@ -424,9 +435,7 @@ class _Search:
         vac = build(Arith(None), self.model, self.spec, vacuity=True)
         status = self.solve(vac, budget * SHARE["vacuity"]).status
         if status == "unsat":
-            return self.result(
-                Verdict.PROVED, f"the case never fires under these readings (vacuous; {self.spent:.2f} s)"
-            )
+            return self.result(Verdict.PROVED, "the case never fires under these readings (vacuous)")
         self.fires = status == "sat"
         return None
 
@@ -448,7 +457,7 @@ class _Search:
                 if left < MIN_CHECK:
                     break
                 ans = self.solve(lat, left, self.blocked[q])
-                left -= ans.seconds
+                left -= ans.budget
                 if ans.status == "unsat":
                     self.exhausted.add(q)
                 if ans.status != "sat":
@@ -527,8 +536,7 @@ class _Search:
         if got is None:
             return self.result(
                 Verdict.INCONCLUSIVE,
-                f"solver: {self.last} in the last of {len(rounds(timeout))} rounds ({timeout:g} s in all); {lattices}; "
-                "rerun with a larger --timeout",
+                f"solver: {self.last} {rounds_text(timeout)}; {lattices}; rerun with a larger --timeout",
             )
         initial_too = (
             "none from an initial configuration over the reals"
@@ -729,14 +737,15 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-ENCODING_VERSION = 6
+ENCODING_VERSION = 7
 """Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
 role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
 initial search over the reals after a non-initial solution, fsync replays activate every robot;
 5: rounds of growing budget, lattices q = 1, 2, 4, 8, 20, an irrational answer searched past;
 6: an obligation's checks end within its budget (blocked retries share their lattice's share), and
-vacuity is asked in every round until answered. (The repaired rule set's leg obligations were added
-under 6: new obligations, no existing one changed.)"""
+vacuity is asked in every round until answered (the repaired rule set's leg obligations were added
+under 6: new obligations, no existing one changed); 7: budgets are spent by z3's resource count, not
+the wall clock, so verdicts and reasons are the same on every run."""
 
 
 __all__ = [

@@ -303,3 +303,16 @@ def test_a_counterexample_beyond_the_first_round_is_found_in_a_later_one():
     assert later.verdict is Verdict.VIOLATED and later.witness is not None
     run = check_replay(later.witness, model)  # raises unless every value reproduces
     assert any(v.lemma == "no-collision" for r in run.rounds for v in r.violations)
+
+
+def test_a_verdict_near_the_budget_is_the_same_on_every_run():
+    """The budget is spent by z3's resource count, not the wall clock: a hard obligation given little
+    budget answers with the same verdict and the same reason (its rlimit figures included) twice,
+    even with the machine busy in between."""
+    model = make_model()
+    spec = _spec(model, "no-collision/one-mover-scenario-2.up-2-after-down")
+    first = isolated(prove_spec, model, spec, timeout=3, out=None)
+    busy = sum(i * i for i in range(2_000_000))  # load between the runs
+    second = isolated(prove_spec, model, spec, timeout=3, out=None)
+    assert busy and first.verdict is second.verdict is Verdict.INCONCLUSIVE
+    assert first.reason == second.reason and "rlimit" in first.reason, (first.reason, second.reason)

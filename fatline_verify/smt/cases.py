@@ -55,6 +55,8 @@ class Arith:
         self.ctx = z3.Context()
         self.q = q
         self.unit = q or 1
+        self.rlimit_seen = 0
+        """z3's resource count of this context after its last check (counts are cumulative per context)."""
 
     @property
     def lattice(self) -> bool:

@@ -35,6 +35,10 @@ class Answer:
     reason: str = ""
     positions: Positions = field(default_factory=dict)
     rounded: bool = False
+    budget: float = 0.0
+    """The budget the check used, in seconds of :data:`RLIMIT_PER_SECOND`: z3's resource count for an
+    answer, the whole budget given for ``unknown``. Deterministic, unlike :attr:`seconds` (the wall
+    clock), so a search that spends its budget by it reaches the same verdicts on every run."""
 
 
 def exact_value(value: z3.ExprRef, q: int | None = None) -> tuple[Fraction, bool]:
@@ -62,6 +66,12 @@ def unknown_reason(solver: z3.Solver, seconds: float) -> str:
     return reason
 
 
+def _rlimit_count(solver: z3.Solver) -> int:
+    """z3's resource count of the solver's context so far (cumulative over the context's checks)."""
+    stats = solver.statistics()
+    return int(stats.get_key_value("rlimit count")) if "rlimit count" in stats.keys() else 0  # noqa: SIM118
+
+
 def solver_for(built: Built, seconds: float) -> z3.Solver:
     """A solver holding the obligation (and its lattice bounds), with a budget of ``seconds``."""
     solver = z3.Solver(ctx=built.ar.ctx)
@@ -77,10 +87,13 @@ def check(solver: z3.Solver, built: Built, seconds: float) -> Answer:
     t0 = time.perf_counter()
     res = solver.check()
     spent = time.perf_counter() - t0
+    count = _rlimit_count(solver)
+    used = seconds if res == z3.unknown else min(seconds, (count - built.ar.rlimit_seen) / RLIMIT_PER_SECOND)
+    built.ar.rlimit_seen = count
     if res == z3.unsat:
-        return Answer("unsat", spent)
+        return Answer("unsat", spent, budget=used)
     if res == z3.unknown:
-        return Answer("unknown", spent, unknown_reason(solver, seconds))
+        return Answer("unknown", spent, unknown_reason(solver, seconds), budget=used)
     m = solver.model()
     positions: Positions = {}
     rounded = False
@@ -89,7 +102,7 @@ def check(solver: z3.Solver, built: Built, seconds: float) -> Answer:
         fy, ry = exact_value(m.eval(y, model_completion=True), built.ar.q)
         positions[name] = (fx, fy)
         rounded = rounded or rx or ry
-    return Answer("sat", spent, positions=positions, rounded=rounded)
+    return Answer("sat", spent, positions=positions, rounded=rounded, budget=used)
 
 
 def block(solver: z3.Solver, built: Built, positions: Positions) -> None:
