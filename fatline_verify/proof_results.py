@@ -13,8 +13,8 @@ from pathlib import Path
 from typing import Any
 
 from .config import Model
-from .outputs import Kind, child, is_output, read_json, write_json
-from .prover import NotEncodedModel, ProofResult, Task, prove_fingerprint, task_key, tasks_for
+from .outputs import Kind, is_output, read_json, write_json
+from .prover import NotEncodedModel, ProofResult, Task, prove_fingerprint, task_key, tasks_for, witness_path
 from .smt.solving import solver_version
 from .trace import write_trace
 
@@ -23,12 +23,6 @@ def row_key(row: dict[str, Any]) -> str:
     """``lemma/form-case[.and.other]`` (rows before encoding 3 had no case: their rule stands in)."""
     tail = f".and.{row['other']}" if row.get("other") else ""
     return f"{row['lemma']}/{row['form']}-{row.get('case', row['rule'])}{tail}"
-
-
-def witness_path(model: Model, directory: Path, key: str) -> Path:
-    """``DIRECTORY/MODEL-prove-LEMMA-FORM-RULE.json`` for the obligation ``key``."""
-    lemma, rest = key.split("/", 1)
-    return child(directory, f"{model.name}-prove-{lemma}-{rest}", ".json")
 
 
 class ProofResults:

@@ -333,6 +333,25 @@ def replay(model: Model, spec: Spec, positions: dict[str, tuple[Fraction, Fracti
     return Replayed(state, j, initial, problems, doc, what)
 
 
+def replay_known(model: Model, spec: Spec, doc: dict[str, Any]) -> Replayed | None:
+    """An earlier run's counterexample of ``spec`` (its trace file), replayed by the executable model
+    as the search would replay a solver's answer: the same case, the same claim broken, from an
+    initial configuration; ``None`` if it does not (the readings changed, say), and the search runs."""
+    try:
+        state = [(Fraction(str(x)), Fraction(str(y))) for x, y in doc["initial"]]
+        j = int(doc["violation"]["robots"][1])
+    except (KeyError, IndexError, TypeError, ValueError):
+        return None
+    if not 0 < j < len(state):
+        return None
+    focus = "s" if spec.form == TWO_MOVERS else "o"
+    positions = {"r": model.from_lattice(state[0])}
+    positions.update({f"x{k}": model.from_lattice(p) for k, p in enumerate(state[1:], 1) if k != j})
+    positions[focus] = model.from_lattice(state[j])
+    got = replay(model, spec, {k: (Fraction(x), Fraction(y)) for k, (x, y) in positions.items()}, focus)
+    return got if isinstance(got, Replayed) and got.initial and got.doc is not None else None
+
+
 def _claim_fails(model: Model, spec: Spec, state: Sequence[Point], dec: Decision, j: int | None) -> str | None:
     """How r's decision breaks a per-rule claim on ``state`` (``None`` if it does not)."""
     dx, dy = dec.destination
@@ -552,7 +571,9 @@ class _Search:
         )
 
 
-def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None, note: str = "") -> ProofResult:
+def prove_spec(
+    model: Model, spec: Spec, *, timeout: float, out: Path | None, note: str = "", known: dict[str, Any] | None = None
+) -> ProofResult:
     """Decide one obligation (see the module docstring); write its real-number form under ``out``.
 
     The search runs in rounds of growing budget (:func:`rounds`), each round every step that is still
@@ -573,6 +594,9 @@ def prove_spec(model: Model, spec: Spec, *, timeout: float, out: Path | None, no
         write(full, target)
         path = target.as_posix()
     search = _Search(model, spec, full, path, timeout)
+    again = replay_known(model, spec, known) if known is not None else None
+    if again is not None:
+        return search.result(Verdict.VIOLATED, _found(again, "an earlier run's counterexample, replayed first"), again)
     for budget in rounds(timeout):
         found = search.vacuous(budget) or search.lattices(budget)
         if found is None and spec.form != TWO_MOVERS:
@@ -694,12 +718,15 @@ def prove(
     progress: Callable[[str], None] | None = None,
     tasks: list[Task] | None = None,
     on_result: Callable[[ProofResult], None] | None = None,
+    traces: Path | None = None,
 ) -> list[ProofResult]:
     """Every obligation of ``lemmas`` (or exactly ``tasks``) for ``model``; ``.smt2`` files under ``out``.
 
     Each obligation runs in a fresh process (:func:`fatline_verify.fresh.run_fresh`), which also
     spreads them over the cores. ``on_result`` sees each result as it finishes (so a caller can save
     it at once); the list returned is in task order. An interrupt stops the workers and propagates.
+    ``traces``: where earlier runs wrote their counterexamples (default ``out/traces``); an
+    obligation's own is replayed before any search, so a counterexample once found stays found.
     """
     tasks = tasks_for(model, lemmas) if tasks is None else tasks
     if not tasks:
@@ -714,7 +741,9 @@ def prove(
             calls.append((prove_leg, (model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, Spec):
             note = PAPER_PART_NOTE if model.options.repaired else ""
-            calls.append((prove_spec, (paper_part(model), task), {"timeout": timeout, "out": out, "note": note}))
+            known = _known(model, task, traces if traces is not None else out / "traces" if out else None)
+            kwargs = {"timeout": timeout, "out": out, "note": note, "known": known}
+            calls.append((prove_spec, (paper_part(model), task), kwargs))
         else:
             calls.append((prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out}))
     results: list[ProofResult | None] = [None] * len(tasks)
@@ -728,6 +757,24 @@ def prove(
 
     run_fresh(calls, workers, done)
     return [r for r in results if r is not None]
+
+
+def witness_path(model: Model, directory: Path, key: str) -> Path:
+    """``DIRECTORY/MODEL-prove-LEMMA-FORM-RULE.json`` for the obligation ``key``."""
+    from .outputs import child
+
+    lemma, rest = key.split("/", 1)
+    return child(directory, f"{model.name}-prove-{lemma}-{rest}", ".json")
+
+
+def _known(model: Model, task: Spec, traces: Path | None) -> dict[str, Any] | None:
+    """The counterexample an earlier run wrote for ``task`` under ``traces``, if any."""
+    from .outputs import Kind, is_output, read_json
+
+    if traces is None:
+        return None
+    path = witness_path(model, traces, task.key)
+    return read_json(path) if path.is_file() and is_output(path, Kind.TRACE) else None
 
 
 def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
@@ -759,4 +806,5 @@ __all__ = [
     "prove_spec",
     "task_key",
     "tasks_for",
+    "witness_path",
 ]

@@ -316,3 +316,20 @@ def test_a_verdict_near_the_budget_is_the_same_on_every_run():
     second = isolated(prove_spec, model, spec, timeout=3, out=None)
     assert busy and first.verdict is second.verdict is Verdict.INCONCLUSIVE
     assert first.reason == second.reason and "rlimit" in first.reason, (first.reason, second.reason)
+
+
+def test_an_earlier_counterexample_is_replayed_before_any_search():
+    """A counterexample once found stays found: the obligation's own trace is replayed first (no
+    budget needed); another obligation's trace does not replay for it, and the search runs."""
+    from fatline_verify.trace import load_trace
+
+    model = make_model()
+    root = Path(__file__).resolve().parent.parent / "proofs" / "paper" / "traces"
+    own = load_trace(root / "paper-prove-no-collision-one-mover-scenario-1.json")
+    spec = _spec(model, "no-collision/one-mover-scenario-1")
+    got = prove_spec(model, spec, timeout=0.05, out=None, known=own)
+    assert got.verdict is Verdict.VIOLATED and "replayed first" in got.reason and got.witness is not None
+    check_replay(got.witness, model)
+    other = _spec(model, "connectivity/one-mover-scenario-1")
+    missed = prove_spec(model, other, timeout=0.05, out=None, known=own)
+    assert "replayed first" not in missed.reason

@@ -67,6 +67,7 @@ def cmd_prove(args: argparse.Namespace) -> int:
                 tasks=tasks,
                 on_result=store.add,
                 progress=bar.step,
+                traces=traces_dir,
             )
         except KeyboardInterrupt:
             interrupted = True

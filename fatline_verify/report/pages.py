@@ -363,7 +363,10 @@ def _matrix(reports: list[ModelReport]) -> tuple[list[str], list[list[str]]]:
 INTRO = (
     "Which reading of the paper breaks which lemma. *check*: the bounded model checker at each model's bounds "
     "(worst verdict over the robot counts, with the smallest swarm that shows it). "
-    "*prove*: z3 obligations per rule over the reals, counted by verdict. "
+    "*prove*: z3 obligations per decision case of the rules (a repaired model: per pair of leg classes), "
+    "counted by verdict; a PROVED one holds for every swarm size. The prover's *rma-fixed* and *approach* are "
+    "per-rule claims (no rule moves r right of every robot it sees; no rule decreases x), not the checker's "
+    "lemmas of those names. "
     "Every VIOLATED verdict has a counterexample trace in `traces/` that `fatline replay` reproduces."
 )
 
@@ -378,7 +381,10 @@ def cross_model_markdown(reports: list[ModelReport]) -> str:
 
 
 CHECK_TITLE = "bounded model checker: worst verdict over the robot counts, with the smallest swarm that shows it"
-PROVE_TITLE = "prover: z3 obligations per rule over the reals, counted by verdict"
+PROVE_TITLE = (
+    "prover: z3 obligations per decision case, counted by verdict (rma-fixed and approach: the per-rule claims "
+    "'never right of every robot seen' and 'x never decreases')"
+)
 
 
 def _verdict_html(verdict: str) -> str:
