@@ -19,7 +19,9 @@ ROOT = Path(__file__).resolve().parent.parent
 def _fake_prove(verdict: Verdict):
     """A stand-in for the solver: every obligation asked for gets ``verdict`` at once."""
 
-    def fake(model, lemmas=(), *, slots, timeout, out, jobs=None, progress=None, tasks=None, on_result=None, traces=None):
+    def fake(
+        model, lemmas=(), *, slots, timeout, out, jobs=None, progress=None, tasks=None, on_result=None, traces=None
+    ):
         tasks = prover.tasks_for(model, lemmas) if tasks is None else tasks
         results = []
         for task in tasks:
