@@ -82,6 +82,9 @@ class Rule(StrEnum):
     """Not the paper's: ``repair_approach=on``: instead of Scenario 4's drop, r moves right to x_psi - 2."""
     REPAIR_LOCK = "repair-lock"
     """Not the paper's: ``repair_lock=left-first`` holds r, which sees a robot before it in (x, y)."""
+    REPAIR_DETOUR = "repair-detour"
+    """Not the paper's: ``repair_progress=detour``: every leg toward r's destination refused, r takes another
+    leg (the bottom of its vertical up, else up or down off its vertical's robots)."""
     REPAIR_BLOCKED = "repair-blocked"
     """Not the paper's: ``repair_clear`` or ``repair_edges`` refuse every leg toward r's destination."""
 

@@ -199,6 +199,13 @@ class RepairEdges(StrEnum):
     ON = "on"
 
 
+class RepairProgress(StrEnum):
+    """Repair: what an unlocked robot does when every leg toward its destination is refused."""
+
+    OFF = "off"
+    DETOUR = "detour"
+
+
 @dataclass(frozen=True, slots=True)
 class OptionSpec:
     """One open point of the paper: its id, the quoted text, and what each reading means."""
@@ -518,6 +525,19 @@ CATALOGUE: dict[str, OptionSpec] = {
             },
             note="removes: r walking out of a neighbour's view",
         ),
+        _spec(
+            "repair_progress",
+            RepairProgress,
+            "(a repair, not the paper's) there exists always a robot which will move unless all the robots are "
+            "on a straight line",
+            {
+                "off": "a robot whose every leg toward its destination is refused stays",
+                "detour": "(with repair_lock, repair_step, repair_clear, repair_edges) an unlocked robot whose every "
+                "leg toward its destination is refused tries, in a fixed order, other legs of the same classes: "
+                "the bottom of its vertical one radius up, then one radius up or down off its vertical's robots",
+            },
+            note="removes: a deadlock where the one unlocked robot's legs toward its destination are all refused",
+        ),
     ]
 }
 
@@ -551,6 +571,7 @@ class Options:
     repair_step: RepairStep = RepairStep.OFF
     repair_clear: RepairClear = RepairClear.OFF
     repair_edges: RepairEdges = RepairEdges.OFF
+    repair_progress: RepairProgress = RepairProgress.OFF
 
     @property
     def repaired(self) -> bool:

@@ -37,6 +37,18 @@ The repairs and the counterexample class each one removes:
   or (under the lock) of a robot b right of r that sees c wherever c may move: b is held by the
   lock, so an edge r-c that goes is bridged by r-b-c, and the swarm stays connected.
 
+- ``repair_progress = detour`` (with the lock, unit steps, clearance and edges): *a deadlock where the
+  unlocked robot's legs toward its destination are all refused* (``(0, 1) (1, 4) (2, 0)``: right is
+  refused by clearance with (2, 0), down by the edge to (1, 4)). It tries other legs of the same
+  three classes, in a fixed order (:func:`_progress`): right (Scenario 4's drop first steps right, at
+  most to the greatest x r sees), then along its vertical toward the nearest height, reachable by
+  allowed legs, from which that step would pass, then the leg toward its destination, the top's
+  contraction, one radius up, then down. Every move it makes passes :func:`allowed` and is a leg of
+  :class:`Leg`: the leg obligations (:mod:`fatline_verify.smt.legs`) cover it unchanged. What it
+  cannot remove: configurations where no robot has any such leg (the square ``(0, 0) (0, 4) (4, 0)
+  (4, 4)`` of side ``rad_v``; at ``q = 2`` three robots, ``(0, 3/2)`` between ``(3/2, 0)`` and
+  ``(3/2, 3)``).
+
 ``repair_stack = align`` also contracts a vertical: a robot that sees only robots on its own vertical
 above it (the bottom) moves one radius up, ending at least 3 below the nearest (which may come down
 one radius), and the top (robots below only) moves down, ending at least 2 above the nearest: the
@@ -52,6 +64,7 @@ from collections.abc import Sequence
 from dataclasses import replace
 from enum import StrEnum
 from fractions import Fraction
+from typing import Any
 
 from .algorithm import ORIGIN, Decision, Rule, _path, _stay
 from .config import Model
@@ -64,6 +77,7 @@ from .options import (
     RepairClear,
     RepairEdges,
     RepairLock,
+    RepairProgress,
     RepairStack,
     RepairStep,
 )
@@ -240,6 +254,8 @@ def repair(decision: Decision, snapshot: Sequence[Point], model: Model) -> Decis
     kw = {"psi": decision.psi, "r_psi": decision.r_psi, "candidates": decision.candidates, "case": decision.case}
     if model.options.repair_lock is RepairLock.LEFT_FIRST and locked(snapshot):
         return _stay(Rule.REPAIR_LOCK, decision.classification, **kw)
+    if _detour_on(model):
+        return _progress(decision, snapshot, model, kw)
     for end, path in legs(decision.destination, model):
         if allowed(end, path, snapshot, model):
             return replace(decision, destination=end, path=path)
@@ -251,6 +267,128 @@ def repair(decision: Decision, snapshot: Sequence[Point], model: Model) -> Decis
             if end[1] < 0 and allowed(end, path, snapshot, model):
                 return Decision(Rule.REPAIR_CONTRACT, end, path, decision.classification, **kw)  # type: ignore[arg-type]
     return _stay(Rule.REPAIR_BLOCKED, decision.classification, **kw)
+
+
+def _detour_on(model: Model) -> bool:
+    """``repair_progress = detour``, and the repairs its legs rest on (lock, unit steps, clearance, edges)."""
+    opts = model.options
+    return (
+        opts.repair_progress is not RepairProgress.OFF
+        and opts.repair_lock is RepairLock.LEFT_FIRST
+        and opts.repair_step is not RepairStep.OFF
+        and opts.repair_clear is not RepairClear.OFF
+        and opts.repair_edges is not RepairEdges.OFF
+        and opts.path is not PathShape.VERTICAL_THEN_HORIZONTAL
+    )
+
+
+def _sign(v: Number) -> int:
+    return (v > 0) - (v < 0)
+
+
+def _vertical(way: int, snapshot: Sequence[Point], model: Model) -> tuple[Point, bool] | None:
+    """One radius along r's vertical in ``way`` (1 up, -1 down) as a leg of its class, ``(end, bottom_up)``:
+    ``top`` if r sees no robot above it on its vertical; else ``bottom`` (up only, none below, ending at
+    least 3 below each robot above); else none (a middle robot does not move vertically)."""
+    rho = model.radius
+    above = [c[1] for c in snapshot if c[0] == 0 and c[1] > 0]
+    if not above:
+        return (0, way * rho), False
+    below = any(c[0] == 0 and c[1] < 0 for c in snapshot)
+    if way < 0 or below:
+        return None
+    up = min(rho, min(above) - 3 * rho)
+    return ((0, up), True) if up > 0 else None
+
+
+def _seen_from(h: Number, snapshot: Sequence[Point], model: Model) -> list[Point]:
+    """The robots r sees that it would still see from ``(0, h)``, relative to that point."""
+    moved = [(c[0], c[1] - h) for c in snapshot]
+    return [c for c in moved if model.sees(c[0] * c[0] + c[1] * c[1])]
+
+
+def _free_way(step: Point, prefer: int, snapshot: Sequence[Point], model: Model) -> int:
+    """The way (1 up, -1 down, 0 none) to the nearest height, whole radii along r's vertical and within
+    view, that r could walk to by legs that pass :func:`allowed` and from which the horizontal leg
+    ``step`` would pass it, the robots r sees staying where they are; at equal distance ``prefer``'s
+    way, else down. Stable as r walks there: that height gets nearer, every other one farther."""
+    rho = model.radius
+    best: tuple[int, int] | None = None
+    for rank, w in enumerate((prefer, -prefer) if prefer else (-1, 1)):
+        h: Number = 0
+        for i in range(1, model.view // rho + 1):
+            here = _seen_from(h, snapshot, model)
+            leg = _vertical(w, here, model)
+            if leg is None or not allowed(leg[0], (ORIGIN, leg[0]), here, model, bottom_up=leg[1]):
+                break
+            h += leg[0][1]
+            if allowed(step, (ORIGIN, step), _seen_from(h, snapshot, model), model):
+                if best is None or (i, rank) < best:
+                    best = (i, rank)
+                break
+    if best is None:
+        return 0
+    return ((prefer, -prefer) if prefer else (-1, 1))[best[1]]
+
+
+def _shorter(end: Point) -> list[Point]:
+    """``end`` and the lattice points short of it on its axis, longest first (one lattice unit is
+    ``1/q`` radius; at ``q = 1`` only ``end``)."""
+    dx, dy = end
+    if not isinstance(dx, int) or not isinstance(dy, int):
+        return [end]
+    return [(_sign(dx) * k, _sign(dy) * k) for k in range(abs(dx) + abs(dy), 0, -1)]
+
+
+def _progress(decision: Decision, snapshot: Sequence[Point], model: Model, kw: dict[str, Any]) -> Decision:
+    """``repair_progress = detour`` for an unlocked robot that would move (every leg one of the classes
+    of :class:`Leg`, passing :func:`allowed`), trying in this order:
+
+    1. the horizontal leg toward its destination; for a vertical destination (Scenario 4's drop), one
+       radius right (at most to the greatest x r sees, so never past the RMA) instead;
+    2. one radius along its vertical toward the nearest height from which that horizontal leg would
+       pass (:func:`_free_way`), around what refuses it;
+    3. the vertical leg toward its destination;
+    4. the top of a vertical down toward the robot below (the contraction of ``repair_stack``);
+    5. one radius up its vertical (``top``, or ``bottom`` keeping 3 below the robot above), then down;
+    each leg, if refused, also shorter, by whole lattice units (``q > 1``); else it stays (``repair-blocked``)."""
+    rho = model.radius
+    dx, dy = decision.destination
+    right = max((c[0] for c in snapshot), default=0)
+    tries: list[tuple[Rule, Point, bool]] = []
+    step: Point | None = None
+    if dx > 0:
+        step = (_toward(dx, rho), 0)
+        tries.append((decision.rule, step, False))
+    elif right > 0:
+        step = (min(rho, right), 0)
+        tries.append((Rule.REPAIR_DETOUR, step, False))
+    if step is not None and not allowed(step, (ORIGIN, step), snapshot, model):
+        way = _free_way(step, _sign(dy), snapshot, model)
+        leg = _vertical(way, snapshot, model) if way else None
+        if leg is not None:
+            tries.append((Rule.REPAIR_DETOUR, *leg))
+    if dy:
+        leg = _vertical(_sign(dy), snapshot, model)
+        if leg is not None and leg[0][1] == _sign(dy) * rho:
+            tries.append((decision.rule, (0, _toward(dy, rho)), leg[1]))
+        elif leg is not None:
+            tries.append((decision.rule, *leg))
+    below = [c[1] for c in snapshot if c[0] == 0 and c[1] < 0]
+    if below and not below_another(snapshot):
+        down = max(-rho, max(below) + 2 * rho)
+        if down < 0:
+            tries.append((Rule.REPAIR_CONTRACT, (0, down), False))
+    for way in (1, -1):  # last: any leg along r's vertical, up first
+        leg = _vertical(way, snapshot, model)
+        if leg is not None:
+            tries.append((Rule.REPAIR_DETOUR, *leg))
+    for rule, end, bottom_up in tries:
+        for short in _shorter(end):
+            path = (ORIGIN, short)
+            if allowed(short, path, snapshot, model, bottom_up=bottom_up):
+                return replace(decision, rule=rule, destination=short, path=path)
+    return _stay(Rule.REPAIR_BLOCKED, decision.classification, **kw)  # type: ignore[arg-type]
 
 
 __all__ = ["Leg", "allowed", "leg_of", "legs", "locked", "repair"]

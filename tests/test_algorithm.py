@@ -219,6 +219,17 @@ CASES = [
     ("repair-approach", REPAIRED, 4, [(4, 0)], Rule.REPAIR_APPROACH, (1, 0), Case.UNCOVERED),
     ("repair-lock", REPAIRED, 4, [(-1, 3), (3, 1)], Rule.REPAIR_LOCK, (0, 0), None),
     ("repair-step", REPAIRED, 4, [(3, 2)], Rule.SCENARIO_1, (1, 0), None),
+    # repair_progress=detour: (0,1) of (0,1) (1,4) (2,0): the search finds (2,-3); right is refused by (2,-1)
+    # (clearance), down by (1,3) (the edge), and no height below is reachable: one radius up, a top leg.
+    (
+        "repair-detour",
+        {**REPAIRED, "repair_progress": "detour"},
+        4,
+        [(1, 3), (2, -1)],
+        Rule.REPAIR_DETOUR,
+        (0, 1),
+        None,
+    ),
     (
         "repair-blocked",
         {"uncovered": "search-both", "repair_clear": "on"},

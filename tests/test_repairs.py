@@ -145,3 +145,21 @@ def test_the_random_rounds_moved_robots_and_several_at_once():
         pytest.skip("run with the property test")
     assert sum(m > 0 for m in MOVED) > len(MOVED) // 4
     assert any(m > 1 for m in MOVED)
+
+
+def test_the_detour_moves_the_blocked_robot_of_the_three_robot_deadlock():
+    """``repair_progress = detour``: in (0, 1) (1, 4) (2, 0) the only unlocked robot, (0, 1), has its
+    leg right refused by clearance with (2, 0) and its leg down by the edge to (1, 4); without the
+    option it stays (a deadlock), with it it takes one radius up (a top leg), and the round is safe."""
+    state = ((0, 1), (1, 4), (2, 0))
+    before = play_round(state, [0], repaired(repair_progress="off"))
+    assert before.decisions[0].rule is Rule.REPAIR_BLOCKED
+    after = play_round(state, [0], repaired())
+    assert after.decisions[0].rule is Rule.REPAIR_DETOUR and after.decisions[0].destination == (0, 1)
+    assert not after.violations
+
+
+def test_the_detour_needs_the_repairs_its_legs_rest_on():
+    snapshot = ((1, 3), (2, -1))
+    assert decide(snapshot, repaired()).rule is Rule.REPAIR_DETOUR
+    assert decide(snapshot, repaired(repair_edges="off")).rule is not Rule.REPAIR_DETOUR
