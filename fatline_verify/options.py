@@ -204,6 +204,7 @@ class RepairProgress(StrEnum):
 
     OFF = "off"
     DETOUR = "detour"
+    CORNER = "corner"
 
 
 @dataclass(frozen=True, slots=True)
@@ -535,6 +536,9 @@ CATALOGUE: dict[str, OptionSpec] = {
                 "detour": "(with repair_lock, repair_step, repair_clear, repair_edges) an unlocked robot whose every "
                 "leg toward its destination is refused tries, in a fixed order, other legs of the same classes: "
                 "the bottom of its vertical one radius up, then one radius up or down off its vertical's robots",
+                "corner": "detour, then a corner leg (one radius right and one vertically at once): the top of a "
+                "vertical with a robot below it right and down, the bottom right and up, ending 3 below each robot "
+                "above; each robot r sees on its vertical may also be on a corner leg",
             },
             note="removes: a deadlock where the one unlocked robot's legs toward its destination are all refused",
         ),

@@ -43,7 +43,7 @@ from .errors import InvalidInput
 from .fresh import isolated, run_fresh
 from .geometry import dist2
 from .numbers import Point, show_point
-from .options import Scheduler
+from .options import RepairProgress, Scheduler
 from .properties import Lemma, Verdict
 from .schedule import Collision, decide_all, lost_edges, play_round
 from .schedulers import round_scheduler
@@ -182,6 +182,12 @@ def check_encoded(model: Model) -> None:
                 f"{', '.join(missing)} not set: fatline prove encodes a repaired rule set by its legs, which rest "
                 f"on the lock, unit steps, clear paths and kept edges together. Set them, or use fatline check "
                 f"{model.name}"
+            )
+        if model.options.repair_progress is RepairProgress.CORNER:
+            raise NotEncodedModel(
+                "repair_progress='corner': the leg obligations do not cover corner legs (right and vertical at "
+                "once, up to sqrt(2) long, so two far movers may close a gap of more than rad_v to less than 2 "
+                f"unless their neighbours rule it out); expected off or detour. Use fatline check {model.name}"
             )
 
 

@@ -48,6 +48,15 @@ The repairs and the counterexample class each one removes:
   cannot remove: configurations where no robot has any such leg (the square ``(0, 0) (0, 4) (4, 0)
   (4, 4)`` of side ``rad_v``; at ``q = 2`` three robots, ``(0, 3/2)`` between ``(3/2, 0)`` and
   ``(3/2, 3)``).
+- ``repair_progress = corner`` (the detour, then): *the square of side ``rad_v``*, where each robot on
+  the left vertical holds an edge of length ``rad_v`` along it and one to the right. A *corner* leg
+  moves one radius right and one vertically at once (:func:`_corner`): the top of a vertical with a
+  robot below it there, right and down ((0, 4) to (1, 3) keeps both edges); the bottom, right and up,
+  ending 3 below each robot above. It must clear the move right of each robot on r's vertical too,
+  r allows for each robot on its vertical being on a corner leg (:func:`_anywhere`), and an edge may
+  also be bridged by a robot on r's vertical. A corner leg is up to sqrt(2) long: the unit-step
+  argument for far movers does not cover it, nor do the leg obligations (``fatline prove`` refuses
+  it); the checker and the random-round tests are its evidence.
 
 ``repair_stack = align`` also contracts a vertical: a robot that sees only robots on its own vertical
 above it (the bottom) moves one radius up, ending at least 3 below the nearest (which may come down
@@ -68,7 +77,7 @@ from typing import Any
 
 from .algorithm import ORIGIN, Decision, Rule, _path, _stay
 from .config import Model
-from .geometry import Path, dist2, path_point_dist2
+from .geometry import Path, dist2, path_point_dist2, segment_segment_dist2
 from .numbers import Number, Point
 from .options import (
     Contact,
@@ -97,15 +106,24 @@ class Leg(StrEnum):
     BOTTOM = "bottom"
     """One radius or less up, seeing robots above on its own vertical and none below, ending at least 3
     radii below each (the bottom's contraction)."""
+    TOP_CORNER = "top-corner"
+    """``repair_progress = corner``: one radius or less right and down at once, seeing no robot above on
+    its own vertical and one below."""
+    BOTTOM_CORNER = "bottom-corner"
+    """``repair_progress = corner``: one radius or less right and up at once, seeing robots above on its
+    own vertical and none below, ending at least 3 radii below each."""
+
+
+CORNERS = (Leg.TOP_CORNER, Leg.BOTTOM_CORNER)
 
 
 def leg_of(destination: Point, snapshot: Sequence[Point]) -> Leg:
     """The class of a repaired move to ``destination`` (relative, one axis) from ``snapshot``."""
     dx, dy = destination
-    if dx and dy:
-        raise ValueError(f"a move to {destination} is not along one axis (repair_step = unit makes legs)")
     if not dy:
         return Leg.HORIZONTAL
+    if dx:
+        return Leg.BOTTOM_CORNER if below_another(snapshot) else Leg.TOP_CORNER
     return Leg.BOTTOM if below_another(snapshot) else Leg.TOP
 
 
@@ -148,7 +166,7 @@ def allowed(end: Point, path: Path, snapshot: Sequence[Point], model: Model, *, 
     the bottom's contraction, ``bottom_up``), ``repair_clear`` and ``repair_edges`` (each only when on)."""
     opts = model.options
     lock = opts.repair_lock is RepairLock.LEFT_FIRST
-    if lock and end[0] == 0 and below_another(snapshot) and not bottom_up:
+    if lock and end[1] != 0 and below_another(snapshot) and not bottom_up:
         return False
     if opts.repair_clear is RepairClear.ON:
         limit = model.contact2
@@ -157,6 +175,10 @@ def allowed(end: Point, path: Path, snapshot: Sequence[Point], model: Model, *, 
             d2 = path_point_dist2(path, c)
             if d2 < limit or (strict and d2 == limit):
                 return False
+            if end[0] != 0 and end[1] != 0 and c[0] == 0:  # a corner leg: clear of c's move right too
+                d2 = segment_segment_dist2(ORIGIN, end, c, (c[0] + model.radius, c[1]))
+                if d2 < limit or (strict and d2 == limit):
+                    return False
     if opts.repair_edges is RepairEdges.OFF:
         return True
     return all(_edge_kept(c, end, snapshot, lock, model) for c in snapshot)
@@ -166,39 +188,63 @@ def _edge_kept(c: Point, end: Point, snapshot: Sequence[Point], lock: bool, mode
     """``repair_edges``: r ends within view of ``c`` wherever ``c`` may be (:func:`_wherever`), or,
     under the lock, r ends within view of a robot ``b`` right of it (held by the lock: it sees r,
     which is left of it) that sees ``c`` wherever ``c``'s own move may take it: the edge r-c may
-    go, r and c stay connected through b."""
+    go, r and c stay connected through b. With ``repair_progress = corner``, b may also be on r's
+    vertical, wherever its own move may take it."""
     rho = model.radius
     if all(model.sees(dist2(after, end)) for after in _wherever(c, end, lock, rho)):
         return True
     if not lock:
         return False
-    moves = _anywhere(c, rho)
-    return any(
+    corners = model.options.repair_progress is RepairProgress.CORNER
+    moves = _anywhere(c, rho, snapshot, corners=corners)
+    if any(
         b != c and b[0] > 0 and model.sees(dist2(b, end)) and all(model.sees(dist2(b, after)) for after in moves)
+        for b in snapshot
+    ):
+        return True
+    return corners and any(
+        b != c
+        and b[0] == 0
+        and all(model.sees(dist2(bb, end)) for bb in _anywhere(b, rho, snapshot, corners=True))
+        and all(model.sees(dist2(bb, cc)) for bb in _anywhere(b, rho, snapshot, corners=True) for cc in moves)
         for b in snapshot
     )
 
 
-def _anywhere(c: Point, rho: int) -> tuple[Point, ...]:
-    """Every place a visible robot ``c`` may be after this round under the lock: at rest if it is off
-    r's vertical (right of r, so held; left of r cannot be, or r would be held); on it, one radius
-    right, and one radius up or down if it is above r (it may be the top)."""
+def _anywhere(c: Point, rho: int, snapshot: Sequence[Point] = (), *, corners: bool = False) -> tuple[Point, ...]:
+    """Every place a visible robot ``c`` may be after this round under the lock (the corners of a region
+    holding them all: distance is convex): at rest if it is off r's vertical (right of r, so held; left
+    of r cannot be, or r would be held); on it, one radius right, and one radius up or down if it is
+    above r (it may be the top).
+
+    With ``corners`` (``repair_progress = corner``), from what r sees in ``snapshot``: above r, it may be
+    the top only if r sees no robot above it there (that robot would be closer to it than to r): then
+    also up, down, and right and down; below r, it may be the bottom only if r sees none below it there,
+    and then moves up only if more than 3 below r, ending 3 below r: up, or right and up."""
     x, y = c
     if x != 0:
         return (c,)
-    return (c, (x + rho, y), *(((x, y + rho), (x, y - rho)) if y > 0 else ()))
+    if not corners:
+        return (c, (x + rho, y), *(((x, y + rho), (x, y - rho)) if y > 0 else ()))
+    out = [c, (x + rho, y)]
+    if y > 0 and not any(d[0] == 0 and d[1] > y for d in snapshot):
+        out += [(x, y + rho), (x, y - rho), (x + rho, y - rho)]
+    if y < -3 * rho and not any(d[0] == 0 and d[1] < y for d in snapshot):
+        up = min(y + rho, -3 * rho)
+        out += [(x, up), (x + rho, up)]
+    return tuple(out)
 
 
 def _wherever(c: Point, end: Point, lock: bool, rho: int) -> tuple[Point, ...]:
     """Where a visible robot ``c`` may be after this round, as far as r's edge to it goes.
 
-    At rest, except under the lock when r moves vertically (the top of its vertical, or its bottom
-    contracting it) and ``c`` is on r's vertical: ``c`` may move one radius right. The other pairs on
-    one vertical are covered by the other robot's own test (the robot moving vertically tests r's
-    move right) or need none (two moves right: the distance is at most the larger of the two
+    At rest, except under the lock when r's leg has a vertical part (the top of its vertical, or its
+    bottom contracting it; or a corner leg) and ``c`` is on r's vertical: ``c`` may move one radius
+    right. The other pairs on one vertical are covered by the other robot's own test (the robot
+    moving vertically tests r's move right) or need none (two moves right: the distance is at most the larger of the two
     tested; a move toward r only shortens the edge). Distance is convex along a move, so its ends
     are enough."""
-    if lock and end[0] == 0 and c[0] == 0:
+    if lock and end[1] != 0 and c[0] == 0:
         return (c, (c[0] + rho, c[1]))
     return (c,)
 
@@ -337,7 +383,27 @@ def _shorter(end: Point) -> list[Point]:
     dx, dy = end
     if not isinstance(dx, int) or not isinstance(dy, int):
         return [end]
+    if dx and dy:  # a corner leg: both parts shortened together, each at most its own length
+        most = max(abs(dx), abs(dy))
+        return [(_sign(dx) * min(k, abs(dx)), _sign(dy) * min(k, abs(dy))) for k in range(most, 0, -1)]
     return [(_sign(dx) * k, _sign(dy) * k) for k in range(abs(dx) + abs(dy), 0, -1)]
+
+
+def _corner(snapshot: Sequence[Point], model: Model) -> Point | None:
+    """``repair_progress = corner``: one radius right (at most to the greatest x r sees) and one radius
+    vertically at once. The top of a vertical with a robot below it there: right and down. The
+    bottom (robots above it there, none below): right and up, ending at least 3 below each above."""
+    rho = model.radius
+    right = max(c[0] for c in snapshot)
+    if right <= 0:
+        return None
+    above = [c[1] for c in snapshot if c[0] == 0 and c[1] > 0]
+    below = [c[1] for c in snapshot if c[0] == 0 and c[1] < 0]
+    if below and not above:
+        return (min(rho, right), -rho)
+    if above and not below and min(above) - 3 * rho > 0:
+        return (min(rho, right), min(rho, min(above) - 3 * rho))
+    return None
 
 
 def _progress(decision: Decision, snapshot: Sequence[Point], model: Model, kw: dict[str, Any]) -> Decision:
@@ -383,6 +449,10 @@ def _progress(decision: Decision, snapshot: Sequence[Point], model: Model, kw: d
         leg = _vertical(way, snapshot, model)
         if leg is not None:
             tries.append((Rule.REPAIR_DETOUR, *leg))
+    if model.options.repair_progress is RepairProgress.CORNER:
+        corner = _corner(snapshot, model)
+        if corner is not None:
+            tries.append((Rule.REPAIR_DETOUR, corner, corner[1] > 0))
     for rule, end, bottom_up in tries:
         for short in _shorter(end):
             path = (ORIGIN, short)

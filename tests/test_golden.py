@@ -4,6 +4,7 @@ bounds; a change of behaviour shows up here."""
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -11,8 +12,11 @@ from fatline_verify.config import load_model, shipped_models
 from fatline_verify.properties import CHECKED
 from tests.test_cli import run_cli
 
+BENCH = sorted((Path(__file__).resolve().parent.parent / "bench").glob("*.toml"))
+"""Models kept out of models/ (not shipped) that carry golden verdicts too."""
 
-@pytest.mark.parametrize("path", shipped_models(), ids=lambda p: p.stem)
+
+@pytest.mark.parametrize("path", shipped_models() + BENCH, ids=lambda p: p.stem)
 def test_shipped_model_verdicts(capsys, tmp_path, path):
     model = load_model(path)
     assert set(model.expected) == {lemma.value for lemma in CHECKED}

@@ -6,6 +6,7 @@ repaired model without the repairs the legs rest on is refused in one line."""
 from __future__ import annotations
 
 from fractions import Fraction
+from pathlib import Path
 
 import pytest
 import z3
@@ -34,7 +35,7 @@ def _true(e: z3.BoolRef) -> bool:
     return z3.is_true(value)
 
 
-CLASSES: dict[Leg, int] = {leg: 0 for leg in Leg}
+CLASSES: dict[Leg, int] = {leg: 0 for leg in legs.CLASSES}
 """Moves per leg class seen by the property test (the next test checks each class was exercised)."""
 BRIDGES: list[int] = []
 
@@ -119,8 +120,8 @@ def test_the_obligations_cover_every_pair_of_leg_classes():
     specs = [t for t in tasks_for(repaired()) if isinstance(t, LegSpec)]
     pairs = {(s.lemma, s.form, s.mine, s.other) for s in specs}
     assert len(pairs) == len(specs) == 30
-    for mine in Leg:
-        for other in [legs.REST, *(leg.value for leg in Leg)]:
+    for mine in legs.CLASSES:
+        for other in [legs.REST, *(leg.value for leg in legs.CLASSES)]:
             assert (Lemma.CONNECTIVITY, legs.BRIDGED, mine, other) in pairs  # r: the mover whose test bridged
             either = {(mine, other)} | ({(Leg(other), mine.value)} if other != legs.REST else set())
             for lemma, form in ((Lemma.NO_COLLISION, legs.LEG), (Lemma.CONNECTIVITY, legs.KEPT)):
@@ -169,4 +170,20 @@ def test_a_repaired_model_without_the_repairs_the_legs_need_is_refused(missing, 
     assert main(["prove", str(model), "--out", str(tmp_path / "p"), "-q"]) == 2
     err = capsys.readouterr().err.strip()
     assert f"{missing}=" in err and "not set" in err and len(err.splitlines()) == 1
+    assert not (tmp_path / "p").exists()
+
+
+def test_a_model_with_corner_legs_is_refused_before_any_work(capsys, tmp_path):
+    """``repair_progress = corner`` makes legs the obligations do not cover: one line, exit 2, no files."""
+    from fatline_verify.cli import main
+
+    with pytest.raises(InvalidInput, match=r"repair_progress='corner'.*expected off or detour"):
+        tasks_for(repaired(repair_progress="corner"))
+    source = (Path(__file__).resolve().parent.parent / "bench" / "repaired-progress.toml").read_text()
+    model = tmp_path / "corner.toml"
+    model.write_text(source.replace('repair_progress = "detour"', 'repair_progress = "corner"'))
+    assert 'repair_progress = "corner"' in model.read_text()
+    assert main(["prove", str(model), "--out", str(tmp_path / "p"), "-q"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "repair_progress='corner'" in err and len(err.splitlines()) == 1
     assert not (tmp_path / "p").exists()

@@ -10,8 +10,11 @@ from hypothesis import strategies as st
 
 from fatline_verify.algorithm import Rule, decide, paper_decide
 from fatline_verify.config import load_model, model_to_mapping, shipped_models
+from fatline_verify.geometry import path_point_dist2
 from fatline_verify.options import CATALOGUE, Options
+from fatline_verify.repairs import Leg, allowed, leg_of
 from fatline_verify.schedule import play_round
+from fatline_verify.schedule import snapshot as view_of
 from fatline_verify.swarm import is_connected
 from tests.conftest import make_model
 
@@ -121,14 +124,15 @@ def swarms(draw):
     return q, tuple(state), active
 
 
+@pytest.mark.parametrize("progress", ["detour", "corner"])
 @settings(max_examples=400, deadline=None)
 @given(swarms())
-def test_a_repaired_round_never_collides_or_disconnects_and_keeps_the_rma(case):
+def test_a_repaired_round_never_collides_or_disconnects_and_keeps_the_rma(progress, case):
     """The safety argument of repairs.py on any swarm (not only initial ones, not only in the window):
     discs apart and the graph connected before, then after any activation neither a collision, nor a
-    split, nor a move past the right-most axis."""
+    split, nor a move past the right-most axis. Corner legs (not proved) are held to the same test."""
     q, state, active = case
-    model = repaired(q)
+    model = repaired(q, repair_progress=progress)
     assume(len(state) > 1)
     assert is_connected(state, model)
     result = play_round(state, active, model)
@@ -163,3 +167,30 @@ def test_the_detour_needs_the_repairs_its_legs_rest_on():
     snapshot = ((1, 3), (2, -1))
     assert decide(snapshot, repaired()).rule is Rule.REPAIR_DETOUR
     assert decide(snapshot, repaired(repair_edges="off")).rule is not Rule.REPAIR_DETOUR
+
+
+SQUARE = ((0, 0), (0, 4), (4, 0), (4, 4))
+"""Side ``rad_v``: each robot on the left vertical holds an edge of length ``rad_v`` up or down its
+vertical and one to the right; every one-axis leg lengthens one of them."""
+
+
+def test_the_square_of_side_rad_v_deadlocks_with_one_axis_legs_and_a_corner_leg_moves_it():
+    stuck = play_round(SQUARE, [0, 1, 2, 3], repaired())
+    assert not any(d.moves for d in stuck.decisions.values())
+    moved = play_round(SQUARE, [0, 1, 2, 3], repaired(repair_progress="corner"))
+    movers = {i: d for i, d in moved.decisions.items() if d.moves}
+    assert movers and all(state[0] == 0 for state in (SQUARE[i] for i in movers))
+    top = movers[1]
+    assert top.rule is Rule.REPAIR_DETOUR and top.destination == (1, -1)
+    assert leg_of(top.destination, view_of(SQUARE, 1, repaired())) is Leg.TOP_CORNER
+    assert not moved.violations
+
+
+def test_a_corner_leg_is_refused_where_a_robot_on_r_s_vertical_moving_right_would_meet_it():
+    """At q = 4, the top (0, 0) with (0, -11/4) below it: its corner leg to (1, -1) clears the robot
+    at rest (distance sqrt(65)/4 > 2), not the robot's own move right to (1, -11/4) (7/4 < 2)."""
+    model = repaired(4, repair_progress="corner", repair_edges="off")
+    below, end = (0, -11), (4, -4)
+    assert path_point_dist2(((0, 0), end), below) >= model.contact2
+    assert not allowed(end, ((0, 0), end), (below,), model)
+    assert allowed(end, ((0, 0), end), ((0, -13),), model)  # 9/4 from the move right

@@ -46,7 +46,7 @@ import z3
 from ..config import Model
 from ..options import RepairClear, RepairEdges, RepairLock, RepairStep, Timing
 from ..properties import Lemma
-from ..repairs import Leg
+from ..repairs import CORNERS, Leg
 from .cases import Arith, Pt, apart, sees
 from .claims import Built, capsules_close, segment_close
 
@@ -58,6 +58,10 @@ RIGHTWARD = (
     "destination right of r, or at most to the greatest x r sees)"
 )
 """Why the ``horizontal`` class has ``dx > 0``: the one fact the leg obligations take from the rules."""
+
+CLASSES = tuple(leg for leg in Leg if leg not in CORNERS)
+"""The leg classes the obligations cover: not the corner legs of ``repair_progress = corner``, which
+``fatline prove`` refuses (:func:`fatline_verify.prover.check_encoded`)."""
 
 REST = "rest"
 """The other robot does not move."""
@@ -120,7 +124,7 @@ class LegSpec:
 def leg_specs(lemmas: tuple[Lemma, ...]) -> list[LegSpec]:
     """Every leg obligation of ``lemmas``: unordered pairs where the two robots play the same part
     (``leg``, ``kept``), every ordered pair for ``bridged`` (r is the robot whose test bridged)."""
-    legs = list(Leg)
+    legs = list(CLASSES)
     specs: list[LegSpec] = []
     for lemma in lemmas:
         for form in FORMS.get(lemma, ()):
