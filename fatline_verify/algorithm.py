@@ -83,8 +83,9 @@ class Rule(StrEnum):
     REPAIR_LOCK = "repair-lock"
     """Not the paper's: ``repair_lock=left-first`` holds r, which sees a robot before it in (x, y)."""
     REPAIR_DETOUR = "repair-detour"
-    """Not the paper's: ``repair_progress=detour``: every leg toward r's destination refused, r takes another
-    leg (the bottom of its vertical up, else up or down off its vertical's robots)."""
+    """Not the paper's: ``repair_progress=detour`` (or ``corner``): every leg toward r's destination refused, r
+    takes another (right; along its vertical toward a height from which right passes; up or down; with
+    ``corner``, last, one radius right and one vertically at once)."""
     REPAIR_BLOCKED = "repair-blocked"
     """Not the paper's: ``repair_clear`` or ``repair_edges`` refuse every leg toward r's destination."""
 

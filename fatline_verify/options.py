@@ -534,13 +534,15 @@ CATALOGUE: dict[str, OptionSpec] = {
             {
                 "off": "a robot whose every leg toward its destination is refused stays",
                 "detour": "(with repair_lock, repair_step, repair_clear, repair_edges) an unlocked robot whose every "
-                "leg toward its destination is refused tries, in a fixed order, other legs of the same classes: "
-                "the bottom of its vertical one radius up, then one radius up or down off its vertical's robots",
+                "leg toward its destination is refused tries, in a fixed order, other legs of the same three classes: "
+                "right (at most to the greatest x it sees), along its vertical toward the nearest height from which "
+                "right would pass, toward its destination, the top's contraction, up, then down",
                 "corner": "detour, then a corner leg (one radius right and one vertically at once): the top of a "
                 "vertical with a robot below it right and down, the bottom right and up, ending 3 below each robot "
                 "above; each robot r sees on its vertical may also be on a corner leg",
             },
-            note="removes: a deadlock where the one unlocked robot's legs toward its destination are all refused",
+            note="removes: a deadlock where the one unlocked robot's legs toward its destination are all refused "
+            "(detour); the square of side rad_v, where every one-axis leg loses an edge (corner)",
         ),
     ]
 }
