@@ -29,7 +29,7 @@ from .properties import Lemma, Verdict
 from .schedule import play_round
 from .simulate import Outcome, Run, outcome_after
 from .systems import system_for
-from .trace import replayed_document
+from .trace import initial_positions, initial_radii, replayed_document
 
 MARGIN = 6
 """Lattice points (of the model's own lattice) added on each axis to a configuration's bounding box
@@ -79,10 +79,10 @@ FINEST = 20
 """The finest lattice (points per radius) a configuration is explored on."""
 
 
-def _on_lattice(doc: dict[str, Any], source: Model, model: Model) -> tuple[Model, list[Point]] | None:
+def _on_lattice(doc: dict[str, Any], model: Model) -> tuple[Model, list[Point]] | None:
     """``model`` on the coarsest lattice (a multiple of its own ``q``, at most :data:`FINEST`) that holds
     the trace's initial configuration, and the configuration in its units; ``None`` if none does."""
-    radii = [source.from_lattice((Fraction(str(x)), Fraction(str(y)))) for x, y in doc["initial"]]
+    radii = initial_radii(doc)
     q = model.radius * lcm(*((Fraction(v) * model.radius).denominator for p in radii for v in p))
     if q > FINEST:
         return None
@@ -113,9 +113,9 @@ def against(model: Model, path: Path) -> Against | None:
             len(doc.get("rounds") or []), verdict, reason, states, witness,
         )  # fmt: skip
 
-    fitted = _on_lattice(doc, source, target)
+    fitted = _on_lattice(doc, target)
     if fitted is None:
-        return _its_rounds(doc, source, target, row, f"its initial configuration is on no lattice up to q={FINEST}")
+        return _its_rounds(doc, target, row, f"its initial configuration is on no lattice up to q={FINEST}")
     target, points = fitted
     wanted = next((known for known in Lemma if known.value == lemma), None)
     arr = np.array([points], dtype=np.int64)
@@ -129,7 +129,7 @@ def against(model: Model, path: Path) -> Against | None:
     try:
         ex = explore(system, canon, bound, system.default_engine, max_states=MAX_STATES)
     except (FatlineError, ValueError) as exc:  # ValueError: the bound does not pack into the state keys
-        return _its_rounds(doc, source, model, row, f"q={target.radius}, bound {bound[0]}x{bound[1]}: {exc}")
+        return _its_rounds(doc, model, row, f"q={target.radius}, bound {bound[0]}x{bound[1]}: {exc}")
     result = next((r for r in lemma_verdicts(ex) if r.lemma is wanted), None)
     if result is None:
         return row(NOT_CHECKED, f"lemma {lemma!r} is not one the checker judges")
@@ -139,15 +139,14 @@ def against(model: Model, path: Path) -> Against | None:
     return row(result.verdict.value, reason, ex.n_states, result.witness)
 
 
-def its_rounds(doc: dict[str, Any], source: Model, model: Model) -> Run | None:
+def its_rounds(doc: dict[str, Any], model: Model) -> Run | None:
     """The trace's own rounds (each round's active robots) played by ``model`` from the trace's initial
     configuration, in exact rationals, up to the first round that breaks a lemma; ``None``
     for a trace whose steps are not rounds (ASYNC events)."""
     rounds = doc.get("rounds") or []
     if any("active" not in r or "event" in r for r in rounds):
         return None
-    start = [source.from_lattice((Fraction(str(x)), Fraction(str(y)))) for x, y in doc["initial"]]
-    state = tuple(model.to_lattice(p) for p in start)
+    state = initial_positions(doc, model)
     initial, played = state, []
     for r in rounds:
         result = play_round(state, r["active"], model)
@@ -159,10 +158,10 @@ def its_rounds(doc: dict[str, Any], source: Model, model: Model) -> Run | None:
     return Run(model, initial, tuple(played), end)
 
 
-def _its_rounds(doc: dict[str, Any], source: Model, model: Model, row: Callable[..., Against], why: str) -> Against:
+def _its_rounds(doc: dict[str, Any], model: Model, row: Callable[..., Against], why: str) -> Against:
     """The fallback of a configuration the checker cannot explore: :func:`its_rounds`, the lemma
     judged on each round."""
-    run = its_rounds(doc, source, model)
+    run = its_rounds(doc, model)
     lemma = row(NOT_CHECKED, "").lemma
     if run is None:
         return row(NOT_CHECKED, f"{why}; its steps are not rounds")

@@ -39,7 +39,7 @@ from typing import TYPE_CHECKING, Any
 from .algorithm import Band, Decision
 from .cases import Case, case_of, moving_cases, staying_cases
 from .config import Model
-from .errors import InvalidInput
+from .errors import InvalidInput, InvalidTrace
 from .fresh import isolated, run_fresh
 from .geometry import dist2
 from .numbers import Point, show_point
@@ -63,7 +63,7 @@ from .smt.claims import (
 )
 from .smt.legs import LegSpec, leg_specs, missing_repairs
 from .swarm import initial_problems
-from .trace import replayed_document
+from .trace import initial_radii, replayed_document
 
 if TYPE_CHECKING:
     from .smt.solving import Answer, Positions
@@ -344,16 +344,14 @@ def replay_known(model: Model, spec: Spec, doc: dict[str, Any]) -> Replayed | No
     as the search would replay a solver's answer: the same case, the same claim broken, from an
     initial configuration; ``None`` if it does not (the readings changed, say), and the search runs."""
     try:
-        state = [(Fraction(str(x)), Fraction(str(y))) for x, y in doc["initial"]]
+        state = initial_radii(doc)
         j = int(doc["violation"]["robots"][1])
-    except (KeyError, IndexError, TypeError, ValueError):
+    except (KeyError, IndexError, TypeError, ValueError, InvalidTrace):
         return None
     if not 0 < j < len(state):
         return None
     focus = "s" if spec.form == TWO_MOVERS else "o"
-    positions = {"r": model.from_lattice(state[0])}
-    positions.update({f"x{k}": model.from_lattice(p) for k, p in enumerate(state[1:], 1) if k != j})
-    positions[focus] = model.from_lattice(state[j])
+    positions = {"r": state[0], **{f"x{k}": p for k, p in enumerate(state[1:], 1) if k != j}, focus: state[j]}
     got = replay(model, spec, {k: (Fraction(x), Fraction(y)) for k, (x, y) in positions.items()}, focus)
     return got if isinstance(got, Replayed) and got.initial and got.doc is not None else None
 

@@ -275,15 +275,24 @@ def trace_model(doc: dict[str, Any]) -> Model:
         raise InvalidTrace(f"trace model: {exc}") from None
 
 
-def _positions(doc_points: list[list[Any]], model: Model, where: str) -> State:
+def _radii(doc_points: list[list[Any]], where: str) -> tuple[Point, ...]:
     out = []
     for k, (x, y) in enumerate(doc_points):
         try:
-            point = (parse_number(x, name=f"{where}[{k}].x"), parse_number(y, name=f"{where}[{k}].y"))
+            out.append((parse_number(x, name=f"{where}[{k}].x"), parse_number(y, name=f"{where}[{k}].y")))
         except ValueError as exc:
             raise InvalidTrace(str(exc)) from None
-        out.append(model.to_lattice(point))
     return tuple(out)
+
+
+def _positions(doc_points: list[list[Any]], model: Model, where: str) -> State:
+    return tuple(model.to_lattice(p) for p in _radii(doc_points, where))
+
+
+def initial_radii(doc: dict[str, Any]) -> tuple[Point, ...]:
+    """A trace's initial positions as the file stores them: exact, in radius units (whatever its
+    model's lattice); a malformed number is :class:`InvalidTrace`."""
+    return _radii(doc["initial"], "initial")
 
 
 def initial_positions(doc: dict[str, Any], model: Model) -> State:

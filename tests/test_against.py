@@ -4,13 +4,21 @@ shares the paper's rules keeps them (the check can fail), and the repaired model
 
 from __future__ import annotations
 
+import json
 from collections import Counter
 from pathlib import Path
 
-from fatline_verify.against import GONE_ON_ITS_ROUNDS, NOT_CHECKED, STILL_ON_ITS_ROUNDS, against, corpus_against
+from fatline_verify.against import (
+    GONE_ON_ITS_ROUNDS,
+    NOT_CHECKED,
+    STILL_ON_ITS_ROUNDS,
+    against,
+    corpus_against,
+    its_rounds,
+)
 from fatline_verify.config import load_model
 from fatline_verify.properties import Verdict
-from fatline_verify.trace import check_replay
+from fatline_verify.trace import check_replay, initial_positions
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "reports" / "traces"
@@ -48,3 +56,20 @@ def test_the_repaired_page_shows_the_corpus_side_by_side():
     assert "## The corpus under this model" in page
     assert "![counterexample](../paper/img/" in page and "![under this model](img/against-paper-" in page
     assert "## The corpus under this model" not in (ROOT / "reports" / "paper" / "README.md").read_text()
+
+
+def test_a_counterexample_recorded_on_a_finer_lattice_starts_where_its_file_says(tmp_path):
+    """A trace stores radii whatever its model's lattice: the same counterexample recorded under q = 2
+    comes back from the same configuration, explored or on its own rounds."""
+    model = load_model("paper-centralized")
+    for name in ("paper-check-connectivity-n2.json", "paper-prove-no-collision-two-movers-scenario-1.json"):
+        doc = json.loads((CORPUS / name).read_text())
+        doc["model"]["parameters"]["q"] = 2
+        doc["model"]["name"] = "paper-q2"
+        fine = tmp_path / name
+        fine.write_text(json.dumps(doc))
+        a, b = against(model, CORPUS / name), against(model, fine)
+        assert a is not None and b is not None
+        assert (b.verdict, b.robots, b.reason) == (a.verdict, a.robots, a.reason)
+        assert its_rounds(doc, model) is not None
+        assert its_rounds(doc, model).initial == initial_positions(doc, model)

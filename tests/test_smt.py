@@ -333,3 +333,6 @@ def test_an_earlier_counterexample_is_replayed_before_any_search():
     other = _spec(model, "connectivity/one-mover-scenario-1")
     missed = prove_spec(model, other, timeout=0.05, out=None, known=own)
     assert "replayed first" not in missed.reason
+    fine = make_model(q=2)  # a trace stores radii, whatever the lattice of either model
+    again = prove_spec(fine, _spec(fine, "no-collision/one-mover-scenario-1"), timeout=0.05, out=None, known=own)
+    assert again.verdict is Verdict.VIOLATED and "replayed first" in again.reason, again.reason

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from ..against import Against, corpus_against, its_rounds
-from ..config import Model, model_from_mapping
+from ..config import Model
 from ..trace import load_trace, replayed_document
 from .pictures import frame_svg
 
@@ -37,7 +37,7 @@ def against_entries(model: Model, out: Path, write: Callable[[Path, str], None] 
         if (row.source, row.lemma) not in shown and row.rounds:
             left = out / row.source / "img" / f"{stem}-{row.rounds - 1}.svg"
             doc = load_trace(out / "traces" / row.trace)
-            run = its_rounds(doc, model_from_mapping(doc["model"], default_name="trace"), model)
+            run = its_rounds(doc, model)
             if left.is_file() and run is not None and run.rounds:
                 shown.add((row.source, row.lemma))
                 right = out / model.name / "img" / f"against-{stem}.svg"
