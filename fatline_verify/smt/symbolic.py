@@ -36,16 +36,6 @@ from ..options import (
 )
 
 RULES = list(Rule)
-MOVING = (
-    Rule.SCENARIO_1,
-    Rule.SCENARIO_2,
-    Rule.SCENARIO_3,
-    Rule.UNCOVERED_SEARCH,
-    Rule.SCENARIO_4_I_EMPTY,
-    Rule.SCENARIO_4_I_NONEMPTY,
-)
-
-
 def real(v: Number) -> z3.ArithRef:
     """An exact z3 rational."""
     f = Fraction(v)
@@ -288,4 +278,4 @@ def make_slots(k: int, prefix: str = "") -> list[Slot]:
     return [Slot(z3.Real(f"{prefix}x{i}"), z3.Real(f"{prefix}y{i}"), z3.Bool(f"{prefix}p{i}")) for i in range(k)]
 
 
-__all__ = ["MOVING", "RULES", "Slot", "SymDecision", "decide", "make_slots", "real", "witness_bound"]
+__all__ = ["RULES", "Slot", "SymDecision", "decide", "make_slots", "real", "witness_bound"]
