@@ -43,8 +43,9 @@ from .errors import InvalidInput, InvalidTrace
 from .fresh import isolated, run_fresh
 from .geometry import dist2
 from .numbers import Point, show_point
-from .options import RepairProgress, Scheduler
+from .options import Scheduler
 from .properties import Lemma, Verdict
+from .repair_options import RepairProgress
 from .schedule import Collision, decide_all, lost_edges, play_round
 from .schedulers import round_scheduler
 from .simulate import Outcome, Run, outcome_after

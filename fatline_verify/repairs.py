@@ -79,9 +79,8 @@ from .algorithm import ORIGIN, Decision, Rule, _path, _stay
 from .config import Model
 from .geometry import Path, dist2, path_point_dist2, segment_segment_dist2
 from .numbers import Number, Point
-from .options import (
-    Contact,
-    PathShape,
+from .options import Contact, PathShape
+from .repair_options import (
     RepairApproach,
     RepairClear,
     RepairEdges,

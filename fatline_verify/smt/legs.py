@@ -44,8 +44,9 @@ from dataclasses import dataclass
 import z3
 
 from ..config import Model
-from ..options import RepairClear, RepairEdges, RepairLock, RepairStep, Timing
+from ..options import Timing
 from ..properties import Lemma
+from ..repair_options import RepairClear, RepairEdges, RepairLock, RepairStep
 from ..repairs import CORNERS, Leg
 from .cases import Arith, Pt, apart, sees
 from .claims import Built, capsules_close, segment_close

@@ -36,6 +36,8 @@ from ..options import (
 )
 
 RULES = list(Rule)
+
+
 def real(v: Number) -> z3.ArithRef:
     """An exact z3 rational."""
     f = Fraction(v)
