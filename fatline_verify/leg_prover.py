@@ -20,7 +20,7 @@ from typing import Any
 from .config import Model
 from .numbers import Point, show_point
 from .properties import Lemma, Verdict
-from .prover import MIN_CHECK, ProofResult, rounds, rounds_text
+from .prover import MIN_CHECK, Budget, ProofResult, rounds, rounds_text
 from .repairs import leg_of
 from .schedule import Collision, decide_all, lost_edges, play_round, snapshot
 from .simulate import Outcome, Run, outcome_after
@@ -35,7 +35,7 @@ VACUITY_SHARE = 0.05
 def prove_leg(model: Model, spec: LegSpec, *, timeout: float, out: Path | None) -> ProofResult:
     """Decide one leg obligation; write its real-number form (with its argument) under ``out``."""
     from .smt.cases import Arith
-    from .smt.solving import WALL, check, solver_for, write
+    from .smt.solving import write
 
     full = build(Arith(None), model, spec)
     full.comment = argument(model, spec, full)
@@ -44,32 +44,27 @@ def prove_leg(model: Model, spec: LegSpec, *, timeout: float, out: Path | None) 
         target = out / spec.lemma / f"{spec.key.split('/', 1)[1]}.smt2"
         write(full, target)
         path = target.as_posix()
-    spent, wall, fires, last = 0.0, 0.0, False, "budget exhausted"
+    spend = Budget(timeout)
+    fires, last = False, "budget exhausted"
 
     def result(
         verdict: Verdict, reason: str, doc: dict[str, Any] | None = None, config: tuple[str, ...] = ()
     ) -> ProofResult:
         named = len([n for n in full.bodies if not n.endswith("'")]) - 1
         return ProofResult(
-            spec.lemma, spec.form, "any", verdict, named, True, wall, reason, path, doc, full.comment,
+            spec.lemma, spec.form, "any", verdict, named, True, spend.wall, reason, path, doc, full.comment,
             spec.name, spec.other, config,
         )  # fmt: skip
 
     for budget in rounds(timeout):
-        left = max(0.0, timeout - spent) / WALL
         if not fires:
-            vac = build(Arith(None), model, spec, vacuity=True)
-            seconds = min(budget * VACUITY_SHARE, left)
-            ans = check(solver_for(vac, seconds), vac, seconds)
-            spent, wall = spent + ans.budget, wall + ans.seconds
+            ans = spend.solve(build(Arith(None), model, spec, vacuity=True), budget * VACUITY_SHARE)
             if ans.status == "unsat":
                 return result(Verdict.PROVED, "these legs never occur together (vacuous)")
             fires = ans.status == "sat"
-        seconds = min(budget * (1 - (0 if fires else VACUITY_SHARE)), max(0.0, timeout - spent) / WALL)
-        if seconds < MIN_CHECK:
+        if min(budget, spend.left()) < MIN_CHECK:
             break
-        ans = check(solver_for(full, seconds), full, seconds)
-        spent, wall = spent + ans.budget, wall + ans.seconds
+        ans = spend.solve(full, budget * (1 - (0 if fires else VACUITY_SHARE)))
         if ans.status == "unsat":
             return result(
                 Verdict.PROVED, "unsat over the reals: holds for swarms of every size (the header's argument)"

@@ -399,16 +399,48 @@ def rounds_text(timeout: float) -> str:
     return f"in the last of {n} rounds ({timeout:g} s in all)" if n > 1 else f"in its one round of {timeout:g} s"
 
 
-class _Search:
-    """One obligation's search, in rounds of growing budget (see :func:`prove_spec`)."""
+class Budget:
+    """An obligation's solver budget, spent by every check it makes (the per-case search of
+    :func:`prove_spec`, the leg obligations of :mod:`fatline_verify.leg_prover`)."""
 
-    def __init__(self, model: Model, spec: Spec, full: Built, path: str, timeout: float) -> None:
-        self.model, self.spec, self.full, self.path = model, spec, full, path
+    def __init__(self, timeout: float) -> None:
         self.timeout = timeout
         self.spent = 0.0
         """Budget used, in z3 resource units as seconds (deterministic: it decides what is left)."""
         self.wall = 0.0
         """Wall-clock seconds of the checks (reported, never deciding)."""
+
+    def left(self) -> float:
+        """Seconds of budget a check may still take: the budget not yet used (z3's resource count,
+        so the same on every run), divided by :data:`~fatline_verify.smt.solving.WALL` so that even
+        checks stopped by the wall clock end about within ``timeout``."""
+        from .smt.solving import WALL
+
+        return max(0.0, self.timeout - self.spent) / WALL
+
+    def solve(self, built: Built, seconds: float, blocked: Sequence[Positions] = ()) -> Answer:
+        """Check ``built`` (``blocked`` answers excluded) for at most ``seconds`` of what is left;
+        ``unknown`` without a check if that is less than :data:`MIN_CHECK`."""
+        from .smt.solving import Answer, block, check, solver_for
+
+        seconds = min(seconds, self.left())
+        if seconds < MIN_CHECK:
+            return Answer("unknown", 0.0, "budget exhausted")
+        solver = solver_for(built, seconds)
+        for placement in blocked:
+            block(solver, built, placement)
+        ans = check(solver, built, seconds)
+        self.spent += ans.budget
+        self.wall += ans.seconds
+        return ans
+
+
+class _Search(Budget):
+    """One obligation's search, in rounds of growing budget (see :func:`prove_spec`)."""
+
+    def __init__(self, model: Model, spec: Spec, full: Built, path: str, timeout: float) -> None:
+        super().__init__(timeout)
+        self.model, self.spec, self.full, self.path = model, spec, full, path
         self.blocked: dict[int, list[Positions]] = {q: [] for q in LATTICES}
         self.off_lattice: set[int] = set()
         """Lattices the obligation cannot be put on (a constant off it), or a form searched over the reals only."""
@@ -427,28 +459,6 @@ class _Search:
     def result(self, verdict: Verdict, reason: str, rep: Replayed | None = None) -> ProofResult:
         named = len(self.full.bodies) - 1
         return _result(self.spec, verdict, named, self.wall, reason, self.path, rep, self.full.comment)
-
-    def left(self) -> float:
-        """Seconds of budget a check may still take: the budget not yet used (z3's resource count,
-        so the same on every run), divided by :data:`~fatline_verify.smt.solving.WALL` so that even
-        checks stopped by the wall clock end about within ``timeout``."""
-        from .smt.solving import WALL
-
-        return max(0.0, self.timeout - self.spent) / WALL
-
-    def solve(self, built: Built, seconds: float, blocked: Sequence[Positions] = ()) -> Answer:
-        from .smt.solving import Answer, block, check, solver_for
-
-        seconds = min(seconds, self.left())
-        if seconds < MIN_CHECK:
-            return Answer("unknown", 0.0, "budget exhausted")
-        solver = solver_for(built, seconds)
-        for placement in blocked:
-            block(solver, built, placement)
-        ans = check(solver, built, seconds)
-        self.spent += ans.budget
-        self.wall += ans.seconds
-        return ans
 
     def vacuous(self, budget: float) -> ProofResult | None:
         from .smt.cases import Arith
@@ -802,6 +812,7 @@ the wall clock, so verdicts and reasons are the same on every run."""
 
 __all__ = [
     "LEMMAS",
+    "Budget",
     "GlobalTask",
     "ProofResult",
     "Task",
