@@ -1,5 +1,5 @@
 """``fatline prove`` on the repaired rule set: each leg obligation (:mod:`fatline_verify.smt.legs`)
-decided over the reals, in the prover's rounds (:func:`fatline_verify.prover.rounds`).
+decided over the reals, in the prover's rounds (:func:`fatline_verify.prove_search.rounds`).
 
 1. **Vacuity** (until answered): if the two legs cannot occur together (two robots on one vertical
    both moving as its top, say), PROVED, "these legs never occur together".
@@ -20,7 +20,8 @@ from typing import Any
 from .config import Model
 from .numbers import Point, show_point
 from .properties import Lemma, Verdict
-from .prover import MIN_CHECK, Budget, ProofResult, rounds, rounds_text
+from .prove_search import MIN_CHECK, Budget, rounds, rounds_text
+from .prove_tasks import ProofResult
 from .repairs import leg_of
 from .schedule import Collision, decide_all, lost_edges, play_round, snapshot
 from .simulate import Outcome, Run, outcome_after

@@ -62,7 +62,7 @@ RIGHTWARD = (
 
 CLASSES = tuple(leg for leg in Leg if leg not in CORNERS)
 """The leg classes the obligations cover: not the corner legs of ``repair_progress = corner``, which
-``fatline prove`` refuses (:func:`fatline_verify.prover.check_encoded`)."""
+``fatline prove`` refuses (:func:`fatline_verify.prove_tasks.check_encoded`)."""
 
 REST = "rest"
 """The other robot does not move."""
