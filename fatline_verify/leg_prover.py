@@ -20,7 +20,7 @@ from typing import Any
 from .config import Model
 from .numbers import Point, show_point
 from .properties import Lemma, Verdict
-from .prove_search import MIN_CHECK, Budget, rounds, rounds_text
+from .prove_search import MIN_CHECK, PROVED_REASON, Budget, rounds, rounds_text
 from .prove_tasks import ProofResult
 from .repairs import leg_of
 from .schedule import Collision, decide_all, lost_edges, play_round, snapshot
@@ -67,9 +67,7 @@ def prove_leg(model: Model, spec: LegSpec, *, timeout: float, out: Path | None) 
             break
         ans = spend.solve(full, budget * (1 - (0 if fires else VACUITY_SHARE)))
         if ans.status == "unsat":
-            return result(
-                Verdict.PROVED, "unsat over the reals: holds for swarms of every size (the header's argument)"
-            )
+            return result(Verdict.PROVED, PROVED_REASON)
         if ans.status == "sat":
             verdict, reason, doc, config = replay_legs(model, spec, ans.positions)
             return result(verdict, reason, doc, config)

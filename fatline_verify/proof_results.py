@@ -49,6 +49,11 @@ class ProofResults:
         row = self.rows.get(task_key(task))
         return row if row is not None and row.get("fingerprint") == self.fingerprint else None
 
+    def verdict(self, task: Task) -> str | None:
+        """The saved verdict of ``task`` (whatever settings produced it), ``None`` without a row."""
+        row = self.rows.get(task_key(task))
+        return None if row is None else str(row.get("verdict"))
+
     def add(self, r: ProofResult) -> None:
         """Record one finished obligation (its trace first, then the row), and save."""
         key = r.key

@@ -193,7 +193,7 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-ENCODING_VERSION = 7
+ENCODING_VERSION = 8
 """Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
 role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
 initial search over the reals after a non-initial solution, fsync replays activate every robot;
@@ -201,7 +201,9 @@ initial search over the reals after a non-initial solution, fsync replays activa
 6: an obligation's checks end within its budget (blocked retries share their lattice's share), and
 vacuity is asked in every round until answered (the repaired rule set's leg obligations were added
 under 6: new obligations, no existing one changed); 7: budgets are spent by z3's resource count, not
-the wall clock, so verdicts and reasons are the same on every run."""
+the wall clock, so verdicts and reasons are the same on every run; 8: the linear relaxation of
+the vacuity question and of the obligation is asked first (an unsat one decides; the header says so),
+and what vacuity and the lattices leave of their shares in a round goes to the reals in that round."""
 
 
 __all__ = [

@@ -64,6 +64,34 @@ def test_prove_one_lemma_keeps_the_other_lemmas_rows(tmp_path, monkeypatch, caps
     assert not any(line.startswith("connectivity ") for line in printed)
 
 
+def test_prove_redo_inconclusive_reruns_only_those_rows(tmp_path, monkeypatch):
+    """``--redo-inconclusive``: the obligations whose saved row is INCONCLUSIVE are recomputed, every
+    other row is kept byte for byte (fingerprint included)."""
+    monkeypatch.chdir(ROOT)
+    out = tmp_path / "proofs"
+    shutil.copytree(ROOT / "proofs" / "paper", out / "paper")
+    before = _rows(out / "paper" / "results.json")
+    asked: list[str] = []
+    fake = _fake_prove(Verdict.PROVED)
+
+    def counting(model, lemmas=(), **kwargs):
+        asked.extend(t.key for t in kwargs["tasks"])
+        return fake(model, lemmas, **kwargs)
+
+    monkeypatch.setattr(prover, "prove", counting)
+    code = main(["prove", "paper", "--redo-inconclusive", "--out", str(out), "-q"])
+    assert code in (0, 1)
+    open_keys = {k for k, row in before.items() if row["verdict"] == "INCONCLUSIVE"}
+    assert open_keys and set(asked) == open_keys
+    after = _rows(out / "paper" / "results.json")
+    assert after.keys() == before.keys()
+    for key, row in after.items():
+        if key in open_keys:
+            assert row["reason"] == "fake" and row["verdict"] == "PROVED"
+        else:
+            assert row == before[key]
+
+
 def test_store_saves_each_result_and_keeps_foreign_rows(tmp_path):
     model = load_model("paper")
     (tmp_path / "results.json").write_text(

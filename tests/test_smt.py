@@ -336,3 +336,57 @@ def test_an_earlier_counterexample_is_replayed_before_any_search():
     fine = make_model(q=2)  # a trace stores radii, whatever the lattice of either model
     again = prove_spec(fine, _spec(fine, "no-collision/one-mover-scenario-1"), timeout=0.05, out=None, known=own)
     assert again.verdict is Verdict.VIOLATED and "replayed first" in again.reason, again.reason
+
+
+def test_the_linear_relaxation_keeps_every_solution_and_nothing_nonlinear():
+    """The relaxation replaces exactly the nonlinear comparisons: nothing nonlinear is left, the
+    linear ones are kept, and a solution of the obligation (a replayed counterexample, with each
+    free Boolean given its comparison's value) still solves it, so its unsat can decide."""
+    import z3
+
+    from fatline_verify.smt.cases import Arith
+    from fatline_verify.smt.claims import build
+    from fatline_verify.smt.solving import _nonlinear, check, relaxation, solver_for
+
+    model = make_model()
+    spec = _spec(model, "no-collision/one-mover-scenario-1")
+    full = build(Arith(None), model, spec)
+    relaxed = relaxation(full)
+    memo: dict[int, bool] = {}
+    assert not any(_nonlinear(a, memo) for a in relaxed.assertions)
+    assert len(relaxed.assertions) == len(full.assertions)
+    found = check(solver_for(full, 20), full, 20)
+    assert found.status == "sat"
+    pinned = z3.Solver(ctx=full.ar.ctx)
+    pinned.add(*relaxed.assertions)
+    for name, (x, y) in full.bodies.items():
+        fx, fy = found.positions[name]
+        pinned.add(x == z3.RealVal(str(fx), full.ar.ctx), y == z3.RealVal(str(fy), full.ar.ctx))
+    assert pinned.check() == z3.sat
+
+
+def test_a_case_that_never_fires_is_proved_by_its_linear_relaxation_at_once():
+    """paper-literal: R_psi n C (x >= 2, right of the vertical band) and R_psi n D (literal quadrants:
+    x <= -2) never meet one width-4 strip, so Scenario 3 never fires; the nonlinear search did not
+    see it within 60 s (its blockers), the relaxation sees it with a budget of a tenth of a second."""
+    model = load_model("paper-literal")
+    for key in ("approach/x-nondecreasing-scenario-3.up-4", "connectivity/closer-scenario-3.up-7"):
+        result = isolated(prove_spec, model, _spec(model, key), timeout=0.5, out=None)
+        assert result.verdict is Verdict.PROVED and "linear relaxation" in result.reason, (key, result.reason)
+    assert _scenario_3_snapshots(model) == []
+    assert _scenario_3_snapshots(make_model())  # the same grid meets Scenario 3 under the default quadrants
+
+
+def _scenario_3_snapshots(model):
+    """Scenario 3 decisions of the executable model on a grid of 3-robot snapshots around r."""
+    from itertools import combinations
+
+    from fatline_verify.algorithm import Rule
+
+    points = [(Fr(x, 2), Fr(y, 2)) for x in range(-7, 8) for y in range(-7, 8) if x * x + y * y >= 16]
+    points = [p for p in points if model.sees(p[0] ** 2 + p[1] ** 2)]
+    out = []
+    for a, b in combinations(points, 2):
+        if (a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2 >= 4 and decide([a, b], model).rule is Rule.SCENARIO_3:
+            out.append((a, b))
+    return out

@@ -52,6 +52,8 @@ def cmd_prove(args: argparse.Namespace) -> int:
     json_path = claim_file(args.json, name="json", kind=Kind.PROVE, force=args.force) if args.json else None
     claim_files([out / "results.json"], name="out", kind=Kind.PROVE, force=args.force)
     store = ProofResults(model, out, traces_dir, slots=args.slots, timeout=args.timeout)
+    if args.redo_inconclusive:
+        tasks = [t for t in tasks if store.verdict(t) in (None, "INCONCLUSIVE")]
     claim_files(store.witness_paths(tasks), name="traces", kind=Kind.TRACE, force=args.force)
 
     interrupted = False
@@ -126,6 +128,12 @@ def register(sub: Any) -> None:
         "--two-movers",
         action="store_true",
         help="also the two-mover obligations (a pair of rules each, lattice searches only)",
+    )
+    p.add_argument(
+        "--redo-inconclusive",
+        action="store_true",
+        help="only the obligations whose row in OUT/MODEL/results.json is INCONCLUSIVE or missing; every other "
+        "row is kept as it is (its fingerprint still says which settings and encoding produced it)",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="no progress")
     add_force(p)

@@ -68,13 +68,16 @@ def register(sub: Any) -> None:
         help="prover artefacts directory (default: proofs)",
     )
     p.add_argument(
-        "--slots", type=integer("slots", 1, MAX_SLOTS), default=DEFAULT_SLOTS, help="prover slot robots (default 3)"
+        "--slots",
+        type=integer("slots", 1, MAX_SLOTS),
+        default=DEFAULT_SLOTS,
+        help=f"prover slot robots (default {DEFAULT_SLOTS})",
     )
     p.add_argument(
         "--timeout",
         type=seconds("timeout"),
         default=DEFAULT_TIMEOUT,
-        help="prover budget per obligation in seconds (default 4)",
+        help=f"prover budget per obligation in seconds (default {DEFAULT_TIMEOUT:g})",
     )
     p.add_argument("--refresh", action="store_true", help="recompute results even when the cached ones are up to date")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress")

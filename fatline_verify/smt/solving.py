@@ -105,6 +105,53 @@ def check(solver: z3.Solver, built: Built, seconds: float) -> Answer:
     return Answer("sat", spent, positions=positions, rounded=rounded, budget=used)
 
 
+def _nonlinear(e: z3.ExprRef, memo: dict[int, bool]) -> bool:
+    """Whether ``e`` multiplies two terms that are not numerals (anywhere inside it)."""
+    key = e.get_id()
+    if key not in memo:
+        product = z3.is_mul(e) and sum(not z3.is_arith(c) or not _numeral(c) for c in e.children()) > 1
+        memo[key] = product or any(_nonlinear(c, memo) for c in e.children())
+    return memo[key]
+
+
+def _numeral(e: z3.ExprRef) -> bool:
+    return z3.is_int_value(e) or z3.is_rational_value(e) or z3.is_algebraic_value(e)
+
+
+def _connective(f: z3.ExprRef) -> bool:
+    """A Boolean connective whose arguments are formulas (not an arithmetic comparison)."""
+    if z3.is_and(f) or z3.is_or(f) or z3.is_not(f) or z3.is_implies(f):
+        return True
+    if z3.is_eq(f) or z3.is_app_of(f, z3.Z3_OP_ITE) or z3.is_app_of(f, z3.Z3_OP_XOR):
+        return all(z3.is_bool(c) for c in f.children())
+    return False
+
+
+def relaxation(built: Built) -> Built:
+    """The obligation's *linear relaxation*: every comparison that multiplies two non-constant terms
+    replaced by a fresh Boolean (the same comparison by the same Boolean), the rest kept. Every
+    solution of the obligation is one of its relaxation (give each Boolean its comparison's truth
+    value), so an ``unsat`` relaxation means an ``unsat`` obligation; the relaxation is linear
+    arithmetic with Booleans, which z3 decides completely and fast. A ``sat`` relaxation says nothing."""
+    ctx = built.ar.ctx
+    memo: dict[int, bool] = {}
+    done: dict[int, z3.BoolRef] = {}
+
+    def walk(f: z3.BoolRef) -> z3.BoolRef:
+        key = f.get_id()
+        if key not in done:
+            if _connective(f):
+                done[key] = f.decl()(*[walk(c) for c in f.children()])
+            elif _nonlinear(f, memo):
+                done[key] = z3.Bool(f"relaxed!{len(done)}", ctx)
+            else:
+                done[key] = f
+        return done[key]
+
+    assertions = [walk(a) for a in built.assertions]
+    return Built(built.ar, assertions, built.bodies, built.focus, built.comment, [walk(b) for b in built.bounds])
+
+
 def block(solver: z3.Solver, built: Built, positions: Positions) -> None:
     """Exclude exactly this placement of the named robots (lattice searches go on past it)."""
     q = built.ar.q or 1
@@ -133,4 +180,4 @@ def solver_version() -> str:
     return f"z3 {z3.get_version_string()}"
 
 
-__all__ = ["Answer", "Positions", "block", "check", "smt2", "solver_for", "write"]
+__all__ = ["Answer", "Positions", "block", "check", "relaxation", "smt2", "solver_for", "write"]
