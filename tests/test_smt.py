@@ -390,3 +390,24 @@ def _scenario_3_snapshots(model):
         if (a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2 >= 4 and decide([a, b], model).rule is Rule.SCENARIO_3:
             out.append((a, b))
     return out
+
+
+@pytest.mark.parametrize(
+    ("z3_reason", "expected"),
+    [
+        ("max. resource limit exceeded", "budget exhausted (rlimit 4,000,000, about 2.0 s)"),
+        ("timeout", "stopped by the wall clock at 3.0 s, before its resource limit (rlimit 4,000,000)"),
+        ("canceled", "stopped by the wall clock at 3.0 s"),
+        ("(incomplete (theory arithmetic))", "(incomplete (theory arithmetic))"),
+    ],
+)
+def test_an_unknown_says_whether_the_resource_limit_or_the_wall_clock_stopped_it(z3_reason, expected):
+    """Only the resource limit is the same on every machine: a check the wall clock stopped says so
+    (a verdict it leaves INCONCLUSIVE may be decided on a less busy machine)."""
+    from fatline_verify.smt.solving import unknown_reason
+
+    class Stopped:
+        def reason_unknown(self) -> str:
+            return z3_reason
+
+    assert unknown_reason(Stopped(), 2.0).startswith(expected)  # type: ignore[arg-type]

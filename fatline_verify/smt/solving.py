@@ -20,7 +20,9 @@ RLIMIT_PER_SECOND = 2_000_000
 on the obligation, so the deterministic limit normally stops a check before the clock does."""
 
 WALL = 1.5
-"""The wall clock stops a check at this many times its budget (a check without resource counting)."""
+"""The wall clock stops a check at this many times its budget (a check without resource counting, or
+z3 running slower than :data:`RLIMIT_PER_SECOND` on a busy machine). Only a check stopped by its
+resource limit stops at the same point on every run; one stopped by the clock says so in its reason."""
 
 Positions = dict[str, tuple[Fraction, Fraction]]
 
@@ -59,10 +61,16 @@ def rlimit(seconds: float) -> int:
 
 
 def unknown_reason(solver: z3.Solver, seconds: float) -> str:
-    """Why a check answered unknown: the budget, said in the user's terms, or z3's own reason."""
+    """Why a check answered unknown: the budget, said in the user's terms (the resource limit, which
+    is the same on every machine, or the wall clock, which is not), or z3's own reason."""
     reason = str(solver.reason_unknown())
-    if any(word in reason for word in ("resource", "timeout", "canceled")):
+    if "resource" in reason:
         return f"budget exhausted (rlimit {rlimit(seconds):,}, about {seconds:.1f} s)"
+    if any(word in reason for word in ("timeout", "canceled")):
+        return (
+            f"stopped by the wall clock at {WALL * seconds:.1f} s, before its resource limit (rlimit "
+            f"{rlimit(seconds):,}): z3 ran slower than the budget assumes, so a less busy machine may decide it"
+        )
     return reason
 
 
