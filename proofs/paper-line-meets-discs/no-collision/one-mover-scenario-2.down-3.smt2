@@ -3,6 +3,7 @@
 ; r's case: witness w: a visible robot of B u C u D; x_psi from its x (psi_right); universal: no visible robot in E u F u G, every visible B u C u D robot has x >= x_w; witnesses b in R_psi n B, c in R_psi n C; universal: no visible robot in R_psi n D; candidates 1..2 down are blocked (witnesses k); candidate 3 down is within the search bound; universal: it is vacant.
 ; Named robots: r, r.w, r.b, r.c, r.k-1, r.k-2, o (r at the origin). Two names are one robot iff their centres are equal; distinct robots are disjoint discs. Universal conditions are asserted for every named robot the decider sees.
 ; Why unsat covers swarms of every size: in any swarm where the claim fails with r in this case, the robots playing the named roles (they exist: the case's witnesses, the robot the claim is about) satisfy every constraint here, because the universal conditions hold for every robot of the swarm. So unsat means no swarm, of any size, breaks the claim in this case. (Conversely a solution's named robots make the same decisions: universal conditions hold in every sub-swarm; tests/test_cases.py checks this on random and crowded swarms.)
+; How unsat may be shown: on the obligation's linear relaxation (every comparison that multiplies two non-constant terms replaced by a free Boolean), which every solution of the obligation also solves; an unsat relaxation is an unsat obligation.
 ; Assumptions: exact real arithmetic; unit discs; one shared snapshot per round.
 (set-logic QF_NRA)
 (declare-fun r.w.y () Real)
