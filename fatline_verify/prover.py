@@ -202,10 +202,9 @@ initial search over the reals after a non-initial solution, fsync replays activa
 vacuity is asked in every round until answered (the repaired rule set's leg obligations were added
 under 6: new obligations, no existing one changed); 7: budgets are spent by z3's resource count, not
 the wall clock, so verdicts and reasons are the same on every run where the clock stops no check
-(a reason says when it did); 8: the clock stops a check at 3 times its budget, not 1.5 (the slowest
-obligations were stopped by it on an idle machine); the linear relaxation of the vacuity question
-and of the obligation is asked first (an unsat one decides; the header says so); what vacuity and
-the lattices leave of their shares in a round goes to the reals in that round."""
+(a reason says when it did); 8: the linear relaxation of the vacuity question and of the obligation
+is asked first (an unsat one decides; the header says so), and what vacuity and the lattices leave
+of their shares in a round goes to the reals in that round."""
 
 
 __all__ = [

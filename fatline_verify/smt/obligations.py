@@ -170,13 +170,13 @@ def solve(ob: Obligation, timeout_s: float) -> Answer:
 
     The budget is z3's deterministic resource limit (``rlimit``), so an answer does not depend on
     the machine's load; the wall clock only stops a runaway check, at
-    :data:`~fatline_verify.smt.solving.CLOCK` times ``timeout_s`` (as every other check).
+    :data:`~fatline_verify.smt.solving.WALL` times ``timeout_s`` (as every other check).
     """
-    from .solving import CLOCK
+    from .solving import WALL
 
     solver = z3.Solver()
     solver.set("rlimit", rlimit(timeout_s))
-    solver.set("timeout", int(CLOCK * timeout_s * 1000))
+    solver.set("timeout", int(WALL * timeout_s * 1000))
     solver.add(*ob.assertions)
     t0 = time.perf_counter()
     res = solver.check()

@@ -20,14 +20,9 @@ RLIMIT_PER_SECOND = 2_000_000
 on the obligation, so the deterministic limit normally stops a check before the clock does."""
 
 WALL = 1.5
-"""Headroom in planning: the last check of an obligation gets what is left of its budget divided by
-this, so that the obligation's wall-clock time stays about within its budget."""
-
-CLOCK = 3.0
-"""The wall clock stops a check at this many times its budget: only a runaway check (one without
-resource counting) or z3 running at less than a third of :data:`RLIMIT_PER_SECOND`. Measured here:
-the slowest obligations run at about 1.3 million units a second, so their checks stop by the
-resource limit, at the same point on every run; one the clock stops says so in its reason."""
+"""The wall clock stops a check at this many times its budget (a check without resource counting, or
+z3 running slower than :data:`RLIMIT_PER_SECOND` on a busy machine). Only a check stopped by its
+resource limit stops at the same point on every run; one stopped by the clock says so in its reason."""
 
 Positions = dict[str, tuple[Fraction, Fraction]]
 
@@ -73,8 +68,8 @@ def unknown_reason(solver: z3.Solver, seconds: float) -> str:
         return f"budget exhausted (rlimit {rlimit(seconds):,}, about {seconds:.1f} s)"
     if any(word in reason for word in ("timeout", "canceled")):
         return (
-            f"stopped by the wall clock at {CLOCK * seconds:.1f} s, before its resource limit (rlimit "
-            f"{rlimit(seconds):,}; z3 ran slower than the budget assumes: a less busy machine may decide it)"
+            f"stopped by the wall clock at {WALL * seconds:.1f} s, before its resource limit (rlimit "
+            f"{rlimit(seconds):,}): z3 ran slower than the budget assumes, so a less busy machine may decide it"
         )
     return reason
 
@@ -89,7 +84,7 @@ def solver_for(built: Built, seconds: float) -> z3.Solver:
     """A solver holding the obligation (and its lattice bounds), with a budget of ``seconds``."""
     solver = z3.Solver(ctx=built.ar.ctx)
     solver.set("rlimit", rlimit(seconds))
-    solver.set("timeout", int(CLOCK * seconds * 1000))
+    solver.set("timeout", int(WALL * seconds * 1000))
     solver.add(*built.assertions, *built.bounds)
     return solver
 
