@@ -12,7 +12,12 @@ open, each step with its own z3 context and deterministic budget (:class:`Budget
    model: if r decides the same case, the claim fails and the configuration is initial, VIOLATED. A
    placement that does not replay as initial is blocked (in every later round too) and the search
    goes on; a lattice with no solution is not searched again.
-3. **The reals** (not for two movers: their group obligations are beyond any budget tried), without
+3. **The linearization** (:mod:`~fatline_verify.smt.linearize`; not for two movers): the obligation
+   over linear arithmetic, its squared distances bounded by exact cuts refined where a solution
+   breaks them. ``unsat`` is PROVED; a solution of the obligation itself (directly, or polished: the
+   few coordinates it gets wrong solved for over the reals, the rest fixed) is replayed, VIOLATED if
+   initial; one that is not initial starts the same search with the initial condition.
+4. **The reals** (not for two movers: their group obligations are beyond any budget tried), without
    the initial condition: ``unsat`` is PROVED (every size, by the header's argument); ``sat`` is
    replayed, VIOLATED if the configuration is initial; otherwise the reals are searched with the
    initial condition (in this round and the later ones), and without an initial solution the verdict
@@ -42,6 +47,7 @@ from .smt.claims import (
 )
 
 if TYPE_CHECKING:
+    from .smt.linearize import Linearization
     from .smt.solving import Answer, Positions
 
 
@@ -50,7 +56,7 @@ LATTICES = (1, 2, 4, 8, 20)
 LATTICES_TEXT = ", ".join(map(str, LATTICES))
 """How reasons name them (``q=1, 2, 4``)."""
 
-SHARE = {"vacuity": 0.05, "lattices": 0.7, "reals": 0.15, "reals-initial": 0.1}
+SHARE = {"vacuity": 0.05, "lattices": 0.45, "linear": 0.25, "reals": 0.15, "reals-initial": 0.1}
 """Each step's share of a round's budget. Measured on the shipped models: a search that finds a
 counterexample mostly finds it on a lattice (the slowest took 15 s at q = 8), and the reals answer
 within a second (the median PROVED) or not within a minute. What vacuity and the lattices leave of
@@ -80,6 +86,14 @@ RELAXED = (
     "relaxation, which has none"
 )
 """Why an unsat linear relaxation (:func:`~fatline_verify.smt.solving.relaxation`) decides."""
+
+
+def linearized(refinements: int) -> str:
+    """Why an unsat :class:`~fatline_verify.smt.linearize.Linearization` decides."""
+    return (
+        f"shown on its linearization after {refinements} refinement(s): each solution satisfies its exact tangent "
+        "lines and sector half-planes, which nothing does"
+    )
 
 
 def rounds(timeout: float) -> list[float]:
@@ -157,8 +171,13 @@ class _Search(Budget):
         self.last = ""
         self.fires = False
         """Whether "r decides this case" is known to have a solution (vacuity is asked until answered)."""
-        self.relaxed_vacuity = self.relaxed_full = False
-        """Whether the linear relaxation of the vacuity question, of the obligation, was asked (once each)."""
+        self.relaxed_vacuity = False
+        """Whether the linear relaxation of the vacuity question was asked (once)."""
+        self.linear_full: Linearization | None = None
+        self.linear_initial: Linearization | None = None
+        self.linear_done = self.linear_initial_done = False
+        """Whether the obligation's linearization answered (or cannot go on; then the initial search's runs),
+        whether the initial search's did."""
 
     def result(self, verdict: Verdict, reason: str, rep: Replayed | None = None) -> ProofResult:
         named = len(self.full.bodies) - 1
@@ -213,16 +232,65 @@ class _Search(Budget):
                 self.blocked[q].append(ans.positions)
         return None
 
+    def linear(self, budget: float) -> ProofResult | None:
+        """The linearization's step of a round (:mod:`~fatline_verify.smt.linearize`): the obligation's
+        until it answers (unsat: PROVED; a solution replayed: VIOLATED if initial), then, with a violation
+        known that is not initial, the initial search's (unsat: no initial violation over the reals), in
+        the same round if the share allows."""
+        share = budget * SHARE["linear"]
+        while True:
+            before = self.spent
+            found, asked = self._linear_step(share)
+            share -= self.spent - before
+            if found is not None or not asked or share < MIN_CHECK:
+                return found
+
+    def _linear_step(self, share: float) -> tuple[ProofResult | None, bool]:
+        """One linearization check; whether one was made."""
+        from .smt.cases import Arith
+        from .smt.claims import build
+        from .smt.linearize import Linearization
+
+        if self.linear_full is None:
+            self.linear_full = Linearization(self.full)
+        lin, initial = self.linear_full, False
+        if self.linear_done:
+            if self.non_initial is None or self.initial_unsat or self.linear_initial_done:
+                return None, False
+            if self.linear_initial is None:
+                self.linear_initial = Linearization(build(Arith(None), self.model, self.spec, initial=True))
+            lin, initial = self.linear_initial, True
+        seconds = min(share, self.left())
+        if seconds < MIN_CHECK:
+            return None, False
+        ans = lin.check(seconds)
+        self.spent += ans.budget
+        self.wall += ans.seconds
+        if ans.status == "unknown":
+            stuck = not ans.reason.startswith(("budget", "stopped"))  # it cannot separate its solution
+            self.linear_initial_done = initial and stuck
+            self.linear_done = self.linear_done or stuck
+            return None, stuck
+        if ans.status == "unsat" and initial:
+            self.initial_unsat = True
+            return None, False
+        if ans.status == "unsat":
+            return self.result(Verdict.PROVED, f"{PROVED_REASON} ({linearized(lin.refinements)})"), True
+        self.linear_done = True
+        self.linear_initial_done = initial
+        got = replay(self.model, self.spec, ans.positions, lin.built.focus)
+        if isinstance(got, str):
+            disagree = self.result(Verdict.INCONCLUSIVE, f"encoding disagreement (linearization): {got}")
+            return (None if ans.rounded else disagree), True
+        if got.initial:
+            return self.result(Verdict.VIOLATED, _found(got, "linearization", ans.rounded), got), True
+        if not initial and self.non_initial is None:
+            self.non_initial = got
+        return None, True
+
     def reals(self, budget: float, unused: float = 0.0) -> ProofResult | None:
         """The reals' step of a round: its own share, and ``unused``, what the steps before it left of
-        theirs (a lattice found empty, or off the obligation, spends none). The obligation's linear
-        relaxation is asked first, once: unsat there is unsat here."""
-        from .smt.solving import relaxation
-
-        if not self.relaxed_full:
-            self.relaxed_full = True
-            if self.solve(relaxation(self.full), budget * SHARE["reals"]).status == "unsat":
-                return self.result(Verdict.PROVED, f"{PROVED_REASON} ({RELAXED})")
+        theirs (a lattice found empty, or off the obligation, spends none)."""
         if self.non_initial is None and self.irrational is None:
             ans = self.solve(self.full, budget * SHARE["reals"] + unused)
             if ans.status == "unsat":
@@ -332,8 +400,9 @@ def prove_spec(
         before = search.spent
         found = search.vacuous(budget) or search.lattices(budget)
         if found is None and spec.form != TWO_MOVERS:
-            unused = budget * (SHARE["vacuity"] + SHARE["lattices"]) - (search.spent - before)
-            found = search.reals(budget, max(0.0, unused))
+            found = search.linear(budget)
+            unused = budget * (SHARE["vacuity"] + SHARE["lattices"] + SHARE["linear"]) - (search.spent - before)
+            found = found or search.reals(budget, max(0.0, unused))
         if found is not None:
             return found
         if search.done() or search.left() < MIN_CHECK:

@@ -193,7 +193,7 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-ENCODING_VERSION = 8
+ENCODING_VERSION = 9
 """Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
 role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
 initial search over the reals after a non-initial solution, fsync replays activate every robot;
@@ -204,7 +204,9 @@ under 6: new obligations, no existing one changed); 7: budgets are spent by z3's
 the wall clock, so verdicts and reasons are the same on every run where the clock stops no check
 (a reason says when it did); 8: the linear relaxation of the vacuity question and of the obligation
 is asked first (an unsat one decides; the header says so), and what vacuity and the lattices leave
-of their shares in a round goes to the reals in that round."""
+of their shares in a round goes to the reals in that round; 9: the linearization (exact cuts of every
+squared distance, refined where a solution breaks them, a solution polished over the reals) replaces
+the one relaxation of the obligation, with a share of its own taken from the lattices'."""
 
 
 __all__ = [

@@ -360,9 +360,11 @@ def argument(model: Model, spec: Spec, built: Built) -> str:
         "constraint here, because the universal conditions hold for every robot of the swarm. So unsat means no swarm, "
         "of any size, breaks the claim in this case. (Conversely a solution's named robots make the same decisions: "
         "universal conditions hold in every sub-swarm; tests/test_cases.py checks this on random and crowded swarms.)",
-        "How unsat may be shown: on the obligation's linear relaxation (every comparison that multiplies two "
-        "non-constant terms replaced by a free Boolean), which every solution of the obligation also solves; "
-        "an unsat relaxation is an unsat obligation.",
+        "How unsat may be shown: on the obligation's linearization (every comparison that multiplies two "
+        "non-constant terms replaced by a Boolean; where it compares a squared distance with a constant, the "
+        "Boolean implies exact linear cuts: tangent lines inside the disc, one of a grid's sector half-planes "
+        "outside it), which every solution of the obligation also solves; an unsat linearization is an unsat "
+        "obligation.",
         "Assumptions: exact real arithmetic; unit discs; one shared snapshot per round.",
     ]
     return "\n".join(lines)

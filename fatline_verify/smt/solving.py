@@ -89,20 +89,32 @@ def solver_for(built: Built, seconds: float) -> z3.Solver:
     return solver
 
 
+def spent(solver: z3.Solver, built: Built) -> float:
+    """The budget, in seconds of :data:`RLIMIT_PER_SECOND`, the context's checks used since the last
+    call (z3's resource count is cumulative per context, over every solver in it)."""
+    count = _rlimit_count(solver)
+    used = (count - built.ar.rlimit_seen) / RLIMIT_PER_SECOND
+    built.ar.rlimit_seen = count
+    return used
+
+
 def check(solver: z3.Solver, built: Built, seconds: float) -> Answer:
     """One ``check``; for sat, every named robot's centre as an exact fraction of a radius
     (algebraic values rounded to 40 digits and flagged: the replay decides whether they still work)."""
     t0 = time.perf_counter()
     res = solver.check()
-    spent = time.perf_counter() - t0
-    count = _rlimit_count(solver)
-    used = seconds if res == z3.unknown else min(seconds, (count - built.ar.rlimit_seen) / RLIMIT_PER_SECOND)
-    built.ar.rlimit_seen = count
+    elapsed = time.perf_counter() - t0
+    used = seconds if res == z3.unknown else min(seconds, spent(solver, built))
     if res == z3.unsat:
-        return Answer("unsat", spent, budget=used)
+        return Answer("unsat", elapsed, budget=used)
     if res == z3.unknown:
-        return Answer("unknown", spent, unknown_reason(solver, seconds), budget=used)
-    m = solver.model()
+        spent(solver, built)
+        return Answer("unknown", elapsed, unknown_reason(solver, seconds), budget=used)
+    return decode(solver.model(), built, elapsed, used)
+
+
+def decode(m: z3.ModelRef, built: Built, elapsed: float, used: float) -> Answer:
+    """A ``sat`` answer from a model: every named robot's centre, exact (algebraic values rounded)."""
     positions: Positions = {}
     rounded = False
     for name, (x, y) in built.bodies.items():
@@ -110,7 +122,7 @@ def check(solver: z3.Solver, built: Built, seconds: float) -> Answer:
         fy, ry = exact_value(m.eval(y, model_completion=True), built.ar.q)
         positions[name] = (fx, fy)
         rounded = rounded or rx or ry
-    return Answer("sat", spent, positions=positions, rounded=rounded, budget=used)
+    return Answer("sat", elapsed, positions=positions, rounded=rounded, budget=used)
 
 
 def _nonlinear(e: z3.ExprRef, memo: dict[int, bool]) -> bool:
@@ -135,15 +147,14 @@ def _connective(f: z3.ExprRef) -> bool:
     return False
 
 
-def relaxation(built: Built) -> Built:
-    """The obligation's *linear relaxation*: every comparison that multiplies two non-constant terms
-    replaced by a fresh Boolean (the same comparison by the same Boolean), the rest kept. Every
-    solution of the obligation is one of its relaxation (give each Boolean its comparison's truth
-    value), so an ``unsat`` relaxation means an ``unsat`` obligation; the relaxation is linear
-    arithmetic with Booleans, which z3 decides completely and fast. A ``sat`` relaxation says nothing."""
+def relaxed_atoms(built: Built) -> tuple[list[z3.BoolRef], list[tuple[z3.BoolRef, z3.BoolRef]]]:
+    """The obligation (its lattice bounds included) with every comparison that multiplies two
+    non-constant terms replaced by a fresh Boolean (the same comparison by the same Boolean; one
+    without unknowns by its value), and the pairs (comparison, Boolean)."""
     ctx = built.ar.ctx
     memo: dict[int, bool] = {}
     done: dict[int, z3.BoolRef] = {}
+    atoms: list[tuple[z3.BoolRef, z3.BoolRef]] = []
 
     def walk(f: z3.BoolRef) -> z3.BoolRef:
         key = f.get_id()
@@ -151,13 +162,26 @@ def relaxation(built: Built) -> Built:
             if _connective(f):
                 done[key] = f.decl()(*[walk(c) for c in f.children()])
             elif _nonlinear(f, memo):
-                done[key] = z3.Bool(f"relaxed!{len(done)}", ctx)
+                value = z3.simplify(f)
+                if z3.is_true(value) or z3.is_false(value):
+                    done[key] = value
+                else:
+                    done[key] = z3.Bool(f"relaxed!{len(done)}", ctx)
+                    atoms.append((f, done[key]))
             else:
                 done[key] = f
         return done[key]
 
-    assertions = [walk(a) for a in built.assertions]
-    return Built(built.ar, assertions, built.bodies, built.focus, built.comment, [walk(b) for b in built.bounds])
+    return [walk(a) for a in (*built.assertions, *built.bounds)], atoms
+
+
+def relaxation(built: Built) -> Built:
+    """The obligation's *linear relaxation* (:func:`relaxed_atoms`). Every solution of the
+    obligation is one of its relaxation (give each Boolean its comparison's truth value), so an
+    ``unsat`` relaxation means an ``unsat`` obligation; the relaxation is linear arithmetic with
+    Booleans, which z3 decides completely and fast. A ``sat`` relaxation says nothing."""
+    relaxed, _ = relaxed_atoms(built)
+    return Built(built.ar, relaxed, built.bodies, built.focus, built.comment, [])
 
 
 def block(solver: z3.Solver, built: Built, positions: Positions) -> None:
