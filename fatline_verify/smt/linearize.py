@@ -29,10 +29,12 @@ import time
 from dataclasses import dataclass, field
 from fractions import Fraction
 from math import isqrt
+from pathlib import Path
 
 import z3
 import z3.z3util
 
+from .cases import Arith
 from .claims import Built
 from .solving import WALL, Answer, decode, relaxed_atoms, rlimit, spent, unknown_reason
 
@@ -315,4 +317,19 @@ class Linearization:
         return solver.model() if solver.check() == z3.sat else None
 
 
-__all__ = ["Disc", "Linearization", "cover", "direction", "disc", "sqrt_down", "sqrt_up"]
+def certificate(path: Path, seconds: float = 30.0) -> str | None:
+    """The linearization of a written obligation (the ``.smt2`` file alone), run until it answers: when
+    unsat, the linear problem it ended with, as SMT-LIB2 (linear arithmetic with Booleans), for another
+    solver to confirm; else None. With the cuts' soundness (``tests/test_linearize.py``), an unsat
+    certificate is an unsat obligation."""
+    ar = Arith(None)
+    built = Built(ar, list(z3.parse_smt2_file(str(path), ctx=ar.ctx)), {}, "")
+    lin = Linearization(built)
+    if lin.check(seconds).status != "unsat":
+        return None
+    plain = z3.Solver(ctx=ar.ctx)
+    plain.add(*lin.solver.assertions())
+    return f"(set-logic QF_LRA)\n{plain.sexpr()}(check-sat)\n"
+
+
+__all__ = ["Disc", "Linearization", "certificate", "cover", "direction", "disc", "sqrt_down", "sqrt_up"]
