@@ -275,6 +275,8 @@ class _Search(Budget):
             self.initial_unsat = True
             return None, False
         if ans.status == "unsat":
+            if self.path:
+                Path(self.path).with_suffix(".linear.smt2").write_text(lin.script(), encoding="utf-8")
             return self.result(Verdict.PROVED, f"{PROVED_REASON} ({linearized(lin.refinements)})"), True
         self.linear_done = True
         self.linear_initial_done = initial

@@ -252,6 +252,19 @@ class Linearization:
         self.refinements = 0
         self.polished = 0
 
+    def script(self) -> str:
+        """The linear problem as it stands (the relaxed obligation and every cut so far), as SMT-LIB2:
+        after ``unsat``, the certificate another solver confirms."""
+        plain = z3.Solver(ctx=self.built.ar.ctx)
+        plain.add(*self.solver.assertions())
+        header = (
+            "; The linearization of the obligation in the file of the same name without '.linear': each nonlinear\n"
+            "; comparison a Boolean, each squared distance's Boolean implying exact tangent lines (inside) or one of\n"
+            "; a grid's sector half-planes (outside), which every solution of the obligation satisfies. Unsat here\n"
+            "; is unsat there.\n"
+        )
+        return f"{header}(set-logic QF_LRA)\n{plain.sexpr()}(check-sat)\n"
+
     def _value(self, m: z3.ModelRef, e: z3.ArithRef) -> Fraction:
         v = m.eval(e, model_completion=True)
         return Fraction(v.numerator_as_long(), v.denominator_as_long())
@@ -327,9 +340,7 @@ def certificate(path: Path, seconds: float = 30.0) -> str | None:
     lin = Linearization(built)
     if lin.check(seconds).status != "unsat":
         return None
-    plain = z3.Solver(ctx=ar.ctx)
-    plain.add(*lin.solver.assertions())
-    return f"(set-logic QF_LRA)\n{plain.sexpr()}(check-sat)\n"
+    return lin.script()
 
 
 __all__ = ["Disc", "Linearization", "certificate", "cover", "direction", "disc", "sqrt_down", "sqrt_up"]
