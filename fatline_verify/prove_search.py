@@ -16,7 +16,8 @@ open, each step with its own z3 context and deterministic budget (:class:`Budget
    over linear arithmetic, its squared distances bounded by exact cuts refined where a solution
    breaks them. ``unsat`` is PROVED; a solution of the obligation itself (directly, or polished: the
    few coordinates it gets wrong solved for over the reals, the rest fixed) is replayed, VIOLATED if
-   initial; one that is not initial starts the same search with the initial condition.
+   initial; one that is not initial, or a linearization that cannot go on, starts the same search
+   with the initial condition.
 4. **The reals** (not for two movers: their group obligations are beyond any budget tried), without
    the initial condition: ``unsat`` is PROVED (every size, by the header's argument); ``sat`` is
    replayed, VIOLATED if the configuration is initial; otherwise the reals are searched with the
@@ -234,9 +235,9 @@ class _Search(Budget):
 
     def linear(self, budget: float) -> ProofResult | None:
         """The linearization's step of a round (:mod:`~fatline_verify.smt.linearize`): the obligation's
-        until it answers (unsat: PROVED; a solution replayed: VIOLATED if initial), then, with a violation
-        known that is not initial, the initial search's (unsat: no initial violation over the reals), in
-        the same round if the share allows."""
+        until it answers (unsat: PROVED; a solution replayed: VIOLATED if initial) or cannot go on (the
+        comparisons its solution breaks are not distances, and too many to polish), then the initial
+        search's (unsat: no initial violation over the reals), in the same round if the share allows."""
         share = budget * SHARE["linear"]
         while True:
             before = self.spent
@@ -249,13 +250,13 @@ class _Search(Budget):
         """One linearization check; whether one was made."""
         from .smt.cases import Arith
         from .smt.claims import build
-        from .smt.linearize import Linearization
+        from .smt.linearize import STUCK, Linearization
 
         if self.linear_full is None:
             self.linear_full = Linearization(self.full)
         lin, initial = self.linear_full, False
         if self.linear_done:
-            if self.non_initial is None or self.initial_unsat or self.linear_initial_done:
+            if self.initial_unsat or self.linear_initial_done:
                 return None, False
             if self.linear_initial is None:
                 self.linear_initial = Linearization(build(Arith(None), self.model, self.spec, initial=True))
@@ -267,7 +268,7 @@ class _Search(Budget):
         self.spent += ans.budget
         self.wall += ans.seconds
         if ans.status == "unknown":
-            stuck = not ans.reason.startswith(("budget", "stopped"))  # it cannot separate its solution
+            stuck = ans.reason == STUCK
             self.linear_initial_done = initial and stuck
             self.linear_done = self.linear_done or stuck
             return None, stuck

@@ -57,8 +57,12 @@ nonlinear rate lasted 2.3 s); a linearization's budget is counted at this rate."
 POLISH_COORDINATES = 8
 """A solution is polished when its disagreements involve at most this many unknowns."""
 
-POLISH_SHARE = 0.1
-"""A polish's share of what is left of the budget."""
+POLISH_BUDGET = 1.0
+"""Seconds of budget a polish may take (at most what is left)."""
+
+STUCK = "the linearization cannot separate its solution from the obligation's comparisons"
+"""Why a linearization stops before its budget: the comparisons its solution breaks are not distances
+(or lie on their circles too closely for a tangent), and too many unknowns to polish."""
 
 
 def sqrt_down(x: Fraction) -> Fraction:
@@ -292,7 +296,7 @@ class Linearization:
             ]
             if not wrong:
                 return decode(m, self.built, time.perf_counter() - t0, min(seconds, seconds - left))
-            polished = self._polish(m, wrong, left * POLISH_SHARE)
+            polished = self._polish(m, wrong, min(left, POLISH_BUDGET))
             left -= spent(self.solver, self.built)
             if polished is not None:
                 self.polished += 1
@@ -304,8 +308,7 @@ class Linearization:
                 if said != d.is_inside(p):
                     cuts += d.refine(p, said, ctx)
             if not cuts:
-                reason = "the linearization cannot separate its solution from the obligation's comparisons"
-                return Answer("unknown", time.perf_counter() - t0, reason, budget=seconds - left)
+                return Answer("unknown", time.perf_counter() - t0, STUCK, budget=seconds - left)
             self.refinements += 1
             self.solver.add(*cuts)
         return Answer("unknown", time.perf_counter() - t0, unknown_reason(self.solver, seconds), budget=seconds)
