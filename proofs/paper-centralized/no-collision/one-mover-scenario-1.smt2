@@ -3,7 +3,7 @@
 ; r's case: witness w: a visible robot of B u C u D; x_psi from its x (psi_right); universal: no visible robot in E u F u G, every visible B u C u D robot has x >= x_w; universal: no visible robot in R_psi n C.
 ; Named robots: r, r.w, o (r at the origin). Two names are one robot iff their centres are equal; distinct robots are disjoint discs. Universal conditions are asserted for every named robot the decider sees.
 ; Why unsat covers swarms of every size: in any swarm where the claim fails with r in this case, the robots playing the named roles (they exist: the case's witnesses, the robot the claim is about) satisfy every constraint here, because the universal conditions hold for every robot of the swarm. So unsat means no swarm, of any size, breaks the claim in this case. (Conversely a solution's named robots make the same decisions: universal conditions hold in every sub-swarm; tests/test_cases.py checks this on random and crowded swarms.)
-; How unsat may be shown: on the obligation's linear relaxation (every comparison that multiplies two non-constant terms replaced by a free Boolean), which every solution of the obligation also solves; an unsat relaxation is an unsat obligation.
+; How unsat may be shown: on the obligation's linearization (every comparison that multiplies two non-constant terms replaced by a Boolean; where it compares a squared distance with a constant, the Boolean implies exact linear cuts: tangent lines inside the disc, one of a grid's sector half-planes outside it), which every solution of the obligation also solves; an unsat linearization is an unsat obligation.
 ; Assumptions: exact real arithmetic; unit discs; one shared snapshot per round.
 (set-logic QF_NRA)
 (declare-fun r.w.y () Real)
