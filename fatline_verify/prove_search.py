@@ -31,7 +31,7 @@ the tool and reported as "encoding disagreement".
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -135,21 +135,31 @@ class Budget:
 
         return max(0.0, self.timeout - self.spent) / WALL
 
-    def solve(self, built: Built, seconds: float, blocked: Sequence[Positions] = ()) -> Answer:
-        """Check ``built`` (``blocked`` answers excluded) for at most ``seconds`` of what is left;
-        ``unknown`` without a check if that is less than :data:`MIN_CHECK`."""
-        from .smt.solving import Answer, block, check, solver_for
+    def ask(self, check: Callable[[float], Answer], seconds: float) -> Answer:
+        """Run ``check`` with at most ``seconds`` of what is left and charge what it used; ``unknown``
+        without a check if that is less than :data:`MIN_CHECK`."""
+        from .smt.solving import Answer
 
         seconds = min(seconds, self.left())
         if seconds < MIN_CHECK:
             return Answer("unknown", 0.0, "budget exhausted")
-        solver = solver_for(built, seconds)
-        for placement in blocked:
-            block(solver, built, placement)
-        ans = check(solver, built, seconds)
+        ans = check(seconds)
         self.spent += ans.budget
         self.wall += ans.seconds
         return ans
+
+    def solve(self, built: Built, seconds: float, blocked: Sequence[Positions] = ()) -> Answer:
+        """Check ``built`` (``blocked`` answers excluded) for at most ``seconds`` of what is left
+        (:meth:`ask`)."""
+        from .smt.solving import block, check, solver_for
+
+        def run(budget: float) -> Answer:
+            solver = solver_for(built, budget)
+            for placement in blocked:
+                block(solver, built, placement)
+            return check(solver, built, budget)
+
+        return self.ask(run, seconds)
 
 
 class _Search(Budget):
@@ -261,12 +271,7 @@ class _Search(Budget):
             if self.linear_initial is None:
                 self.linear_initial = Linearization(build(Arith(None), self.model, self.spec, initial=True))
             lin, initial = self.linear_initial, True
-        seconds = min(share, self.left())
-        if seconds < MIN_CHECK:
-            return None, False
-        ans = lin.check(seconds)
-        self.spent += ans.budget
-        self.wall += ans.seconds
+        ans = self.ask(lin.check, share)
         if ans.status == "unknown":
             stuck = ans.reason == STUCK
             self.linear_initial_done = initial and stuck

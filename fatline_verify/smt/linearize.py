@@ -36,7 +36,7 @@ import z3.z3util
 
 from .cases import Arith
 from .claims import Built
-from .solving import WALL, Answer, decode, relaxed_atoms, rlimit, spent, unknown_reason
+from .solving import WALL, Answer, decode, exact_value, relaxed_atoms, rlimit, spent, unknown_reason
 
 Vec = tuple[Fraction, Fraction]
 
@@ -254,7 +254,6 @@ class Linearization:
         for d in self.discs:
             self.solver.add(*d.cuts(ctx))
         self.refinements = 0
-        self.polished = 0
 
     def script(self) -> str:
         """The linear problem as it stands (the relaxed obligation and every cut so far), as SMT-LIB2:
@@ -268,10 +267,6 @@ class Linearization:
             "; is unsat there.\n"
         )
         return f"{header}(set-logic QF_LRA)\n{plain.sexpr()}(check-sat)\n"
-
-    def _value(self, m: z3.ModelRef, e: z3.ArithRef) -> Fraction:
-        v = m.eval(e, model_completion=True)
-        return Fraction(v.numerator_as_long(), v.denominator_as_long())
 
     def check(self, seconds: float) -> Answer:
         """Refine until ``unsat``, a solution of the obligation, or ``seconds`` of budget are spent."""
@@ -299,11 +294,10 @@ class Linearization:
             polished = self._polish(m, wrong, min(left, POLISH_BUDGET))
             left -= spent(self.solver, self.built)
             if polished is not None:
-                self.polished += 1
                 return decode(polished, self.built, time.perf_counter() - t0, min(seconds, seconds - left))
             cuts = []
             for d in self.discs:
-                p = (self._value(m, d.terms[0]), self._value(m, d.terms[1]))
+                p = (exact_value(m.eval(d.terms[0], True))[0], exact_value(m.eval(d.terms[1], True))[0])
                 said = z3.is_true(m.eval(d.inside(), True))
                 if said != d.is_inside(p):
                     cuts += d.refine(p, said, ctx)

@@ -104,11 +104,11 @@ def check(solver: z3.Solver, built: Built, seconds: float) -> Answer:
     t0 = time.perf_counter()
     res = solver.check()
     elapsed = time.perf_counter() - t0
-    used = seconds if res == z3.unknown else min(seconds, spent(solver, built))
+    measured = spent(solver, built)
+    used = seconds if res == z3.unknown else min(seconds, measured)  # unknown: the whole budget
     if res == z3.unsat:
         return Answer("unsat", elapsed, budget=used)
     if res == z3.unknown:
-        spent(solver, built)
         return Answer("unknown", elapsed, unknown_reason(solver, seconds), budget=used)
     return decode(solver.model(), built, elapsed, used)
 
