@@ -12,7 +12,16 @@ from hypothesis import strategies as st
 
 from fatline_verify.smt.cases import Arith
 from fatline_verify.smt.claims import Built
-from fatline_verify.smt.linearize import FIRST_GRID, Linearization, cover, direction, disc, sqrt_down, sqrt_up
+from fatline_verify.smt.linearize import (
+    FIRST_GRID,
+    Linearization,
+    cover,
+    direction,
+    disc,
+    sector,
+    sqrt_down,
+    sqrt_up,
+)
 from fatline_verify.smt.solving import relaxation, solver_for
 
 rationals = st.fractions(min_value=-6, max_value=6, max_denominator=1000)
@@ -42,6 +51,41 @@ def test_a_point_outside_a_disc_satisfies_one_sector_half_plane(px, py, r2, extr
         return
     planes = cover([*FIRST_GRID, *extra], r2)
     assert any(w[0] * px + w[1] * py >= h for w, h in planes)
+
+
+widths = st.fractions(min_value=Fraction(1, 4096), max_value=1, max_denominator=4096)
+
+
+@settings(max_examples=300)
+@given(rationals, rationals, radii2, params, widths)
+def test_a_point_outside_a_disc_between_a_gaps_directions_satisfies_its_sector_cut(px, py, r2, lo, width):
+    """The local cut a refinement adds: between ``u`` and ``v`` and outside the disc, ``w . l >= h``."""
+    u, v, w, h = sector(lo, lo + width, r2)
+    between = u[0] * py - u[1] * px >= 0 and px * v[1] - py * v[0] >= 0
+    if px * px + py * py < r2 or not between:
+        return
+    assert w[0] * px + w[1] * py >= h
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    st.fractions(min_value=Fraction(1, 10), max_value=Fraction(99, 100), max_denominator=1000),
+    st.floats(min_value=0, max_value=6.28),
+)
+def test_a_refinement_excludes_a_point_wrongly_put_outside(scale, angle):
+    """A point strictly inside the disc that the Boolean calls outside gets cuts that exclude it: z3,
+    given the point and the outside literal, finds the cuts unsatisfiable."""
+    ctx = z3.Context()
+    x, y = z3.Real("x", ctx), z3.Real("y", ctx)
+    boolean = z3.Bool("b", ctx)
+    d = disc(x * x + y * y >= 4, boolean)
+    assert d is not None
+    u = direction(Fraction(round(angle / 6.2832 * 4 * 256), 256) % 4)
+    p = (2 * scale * u[0], 2 * scale * u[1])
+    cuts = d.refine(p, False, ctx)
+    solver = z3.Solver(ctx=ctx)
+    solver.add(*cuts, boolean, x == z3.RealVal(p[0], ctx), y == z3.RealVal(p[1], ctx))
+    assert solver.check() == z3.unsat
 
 
 @settings(max_examples=300)

@@ -15,8 +15,10 @@ of the obligation satisfies:
 
 The linear problem is asked; ``unsat`` means the obligation is unsat. A solution is checked against
 the real comparisons: where a Boolean disagrees with its comparison at the solution, the disc gets a
-tangent line through that point (inside) or a finer grid around it (outside), and the problem is
-asked again. A solution that disagrees nowhere solves the obligation; one that disagrees only in a
+tangent line through that point (inside) or, outside, sector cuts of its own between directions ever
+closer around the point, each asserted only where a point lies between its two directions (a local
+cut: rebuilding the whole cover on a finer grid made the Python side, not z3, take most of the time),
+and the problem is asked again. A solution that disagrees nowhere solves the obligation; one that disagrees only in a
 few robots' coordinates is *polished*: every other coordinate fixed at its value, the obligation
 asked over the reals for those few (a small nonlinear problem). Directions are rational points of the
 unit circle with small denominators, so the linear problems stay cheap.
@@ -24,6 +26,7 @@ unit circle with small denominators, so the linear problems stay cheap.
 
 from __future__ import annotations
 
+import itertools
 import math
 import time
 from dataclasses import dataclass, field
@@ -32,11 +35,10 @@ from math import isqrt
 from pathlib import Path
 
 import z3
-import z3.z3util
 
 from .cases import Arith
 from .claims import Built
-from .solving import WALL, Answer, decode, exact_value, relaxed_atoms, rlimit, spent, unknown_reason
+from .solving import Answer, decode, exact_value, relaxed_atoms, rlimit, spent, unknown_reason, wall_ms
 
 Vec = tuple[Fraction, Fraction]
 
@@ -49,13 +51,23 @@ FIRST_GRID = tuple(Fraction(k, 2) for k in range(8))
 TANGENT_DENOMINATORS = (4, 16, 64, 256, 1024, 4096, 1 << 14, 1 << 16, 1 << 20)
 """Tangent directions are tried with these denominators of ``tan(angle/2)``, the smallest first."""
 
-LINEAR_RATE = 4
+LINEAR_RATE = 3
 """z3 spends its resource units this many times faster on the linear problems than on the nonlinear
-ones, per second (measured on the shipped models' Scenario 2 and 3 cases: 8 s of budget at the
-nonlinear rate lasted 2.3 s); a linearization's budget is counted at this rate."""
+ones, per second; a linearization's budget is counted at this rate. Measured with the sector cuts of
+:meth:`Disc.refine` on ``paper``'s Scenario 2 and 3 cases (68 linear checks, 170 million units in
+29.9 s: 5.7 million a second against :data:`~fatline_verify.smt.solving.RLIMIT_PER_SECOND`'s 2)."""
+
+SUBDIVISIONS = 12
+"""How many times a sector around a wrongly-outside point is split in quarters, at most, until its cut
+excludes the point (a gap of a quarter turn, split 12 times, is under 2e-7 turns wide)."""
 
 POLISH_COORDINATES = 8
 """A solution is polished when its disagreements involve at most this many unknowns."""
+
+POLISH_REPEATS = 3
+"""Polishes per set of free unknowns: the coordinates a polish fixes are at new values each time, but
+one that failed three times rarely succeeds (and nlsat runs slower than the budget assumes: a polish
+that fails costs up to :data:`~fatline_verify.smt.solving.WALL` times its budget in time)."""
 
 POLISH_BUDGET = 1.0
 """Seconds of budget a polish may take (at most what is left)."""
@@ -115,6 +127,17 @@ def cover(grid: list[Fraction], r2: Fraction) -> list[tuple[Vec, Fraction]]:
     return out
 
 
+def sector(lo: Fraction, hi: Fraction, r2: Fraction) -> tuple[Vec, Vec, Vec, Fraction]:
+    """The cut of one gap of a grid, from parameter ``lo`` to ``hi`` (under half a turn): ``(u, v, w,
+    h)`` such that every point ``l`` with ``|l|^2 >= r2`` between the directions ``u`` and ``v``
+    (``u x l >= 0`` and ``l x v >= 0``) has ``w . l >= h`` (``w = u + v``, ``h = R (1 + u . v)`` with
+    ``R`` at most ``sqrt(r2)``: the bisector's half-plane, as in :func:`cover`)."""
+    u, v = direction(lo), direction(hi)
+    if u[0] * v[1] - u[1] * v[0] <= 0:
+        raise ValueError("a grid gap of half a turn or more")
+    return u, v, (u[0] + v[0], u[1] + v[1]), sqrt_down(r2) * (1 + u[0] * v[0] + u[1] * v[1])
+
+
 @dataclass
 class Disc:
     """A comparison ``l1^2 + l2^2  (<=, <, >=, >)  r2`` of linear terms with a constant, and its Boolean."""
@@ -167,15 +190,39 @@ class Disc:
                     line = self.line(u, ctx)
                     return [z3.Implies(self.inside(), line < r if self.inside_when_true and self.strict else line <= r)]
             return []
-        at = parameter(angle)
+        return self._subdivide(p, parameter(angle), ctx)
+
+    def _subdivide(self, p: Vec, at: float, ctx: z3.Context) -> list[z3.BoolRef]:
+        """Cuts for a point ``p`` the Boolean puts outside though it is inside: the grid's gap around
+        ``p``'s angle (parameter ``at``) is split in quarters, each quarter getting its own sector cut
+        (:func:`sector`, asserted where a point lies between its two directions), and the quarter
+        around ``p`` again until its cut excludes ``p`` (none when ``p`` lies on the circle too closely)."""
         params = sorted(set(self.grid))
         for i, lo in enumerate(params):
             hi = params[i + 1] if i + 1 < len(params) else params[0] + 4
             if lo <= at <= hi or lo <= at + 4 <= hi:
                 break
-        new = [lo + (hi - lo) * k / 4 for k in (1, 2, 3)]
-        self.grid += [s - 4 if s >= 4 else s for s in new]
-        return self.sectors(ctx)
+        if at < lo:
+            at += 4
+        outside = z3.Not(self.inside())
+        out: list[z3.BoolRef] = []
+        for _ in range(SUBDIVISIONS):
+            points = [lo + (hi - lo) * k / 4 for k in range(5)]
+            self.grid += [s - 4 if s >= 4 else s for s in points[1:4]]
+            for a, b in itertools.pairwise(points):
+                u, v, w, h = sector(a, b, self.r2)
+                between = [self._cross(u, ctx) >= 0, -self._cross(v, ctx) >= 0]
+                out.append(z3.Implies(z3.And(outside, *between), self.line(w, ctx) >= h))
+            k = min(3, int((at - float(lo)) / float(hi - lo) * 4))
+            lo, hi = points[k], points[k + 1]
+            u, v, w, h = sector(lo, hi, self.r2)
+            if w[0] * p[0] + w[1] * p[1] < h:
+                return out
+        return []
+
+    def _cross(self, u: Vec, ctx: z3.Context) -> z3.ArithRef:
+        """``u x l``: non-negative when ``l`` is counter-clockwise of ``u`` (within half a turn)."""
+        return z3.RealVal(u[0], ctx) * self.terms[1] - z3.RealVal(u[1], ctx) * self.terms[0]
 
 
 def _number(e: z3.ExprRef) -> Fraction | None:
@@ -254,6 +301,9 @@ class Linearization:
         for d in self.discs:
             self.solver.add(*d.cuts(ctx))
         self.refinements = 0
+        self._names: dict[int, frozenset[str]] = {}
+        self._polished: dict[frozenset[str], int] = {}
+        """How many polishes solved for each set of unknowns (at most :data:`POLISH_REPEATS`)."""
 
     def script(self) -> str:
         """The linear problem as it stands (the relaxed obligation and every cut so far), as SMT-LIB2:
@@ -276,7 +326,7 @@ class Linearization:
         left = seconds
         while left >= 0.01:
             self.solver.set("rlimit", rlimit(left * LINEAR_RATE))
-            self.solver.set("timeout", int(WALL * left * 1000))
+            self.solver.set("timeout", wall_ms(left))
             res = self.solver.check()
             left -= spent(self.solver, self.built) / LINEAR_RATE
             if res == z3.unsat:
@@ -307,22 +357,37 @@ class Linearization:
             self.solver.add(*cuts)
         return Answer("unknown", time.perf_counter() - t0, unknown_reason(self.solver, seconds), budget=seconds)
 
+    def _unknowns(self, e: z3.ExprRef) -> frozenset[str]:
+        """The names of the unknowns in ``e`` (memoised by term: atoms share most of their terms)."""
+        key = e.get_id()
+        got = self._names.get(key)
+        if got is None:
+            if z3.is_const(e):
+                value = z3.is_rational_value(e) or z3.is_int_value(e) or z3.is_true(e) or z3.is_false(e)
+                got = frozenset() if value else frozenset({e.decl().name()})
+            else:
+                got = frozenset().union(*(self._unknowns(c) for c in e.children()))
+            self._names[key] = got
+        return got
+
     def _polish(self, m: z3.ModelRef, wrong: list[tuple[z3.BoolRef, z3.BoolRef]], seconds: float) -> z3.ModelRef | None:
         """The obligation over the reals with every unknown fixed at ``m``'s value but those of the
         comparisons ``m`` gets wrong (at most :data:`POLISH_COORDINATES` of them): its model, or None."""
         free: set[str] = set()
         for atom, _ in wrong:
-            free |= {str(v) for v in z3.z3util.get_vars(atom)}
-        if len(free) > POLISH_COORDINATES or seconds < 0.01:
+            free |= self._unknowns(atom)
+        key = frozenset(free)
+        if len(free) > POLISH_COORDINATES or seconds < 0.01 or self._polished.get(key, 0) >= POLISH_REPEATS:
             return None
+        self._polished[key] = self._polished.get(key, 0) + 1
         ctx = self.built.ar.ctx
         solver = z3.Solver(ctx=ctx)
         solver.set("rlimit", rlimit(seconds))
-        solver.set("timeout", int(WALL * seconds * 1000))
+        solver.set("timeout", wall_ms(seconds))
         solver.add(*self.built.assertions, *self.built.bounds)
         for x, y in self.built.bodies.values():
             for v in (x, y):
-                if z3.is_const(v) and str(v) not in free and not z3.is_rational_value(v):
+                if z3.is_const(v) and v.decl().name() not in free and not z3.is_rational_value(v):
                     solver.add(v == m.eval(v, model_completion=True))
         return solver.model() if solver.check() == z3.sat else None
 

@@ -169,14 +169,14 @@ def solve(ob: Obligation, timeout_s: float) -> Answer:
     """Ask z3; for sat, decode the present robots to exact rationals (algebraic values rounded).
 
     The budget is z3's deterministic resource limit (``rlimit``), so an answer does not depend on
-    the machine's load; the wall clock only stops a runaway check, at
-    :data:`~fatline_verify.smt.solving.WALL` times ``timeout_s`` (as every other check).
+    the machine's load; the wall clock only stops a runaway check
+    (:func:`~fatline_verify.smt.solving.wall_ms`, as every other check).
     """
-    from .solving import WALL
+    from .solving import wall_ms
 
     solver = z3.Solver()
     solver.set("rlimit", rlimit(timeout_s))
-    solver.set("timeout", int(WALL * timeout_s * 1000))
+    solver.set("timeout", wall_ms(timeout_s))
     solver.add(*ob.assertions)
     t0 = time.perf_counter()
     res = solver.check()

@@ -20,9 +20,20 @@ RLIMIT_PER_SECOND = 2_000_000
 on the obligation, so the deterministic limit normally stops a check before the clock does."""
 
 WALL = 1.5
-"""The wall clock stops a check at this many times its budget (a check without resource counting, or
-z3 running slower than :data:`RLIMIT_PER_SECOND` on a busy machine). Only a check stopped by its
-resource limit stops at the same point on every run; one stopped by the clock says so in its reason."""
+"""The wall clock stops a check at this many times its budget, plus :data:`WALL_SLACK` (a check without
+resource counting, or z3 running slower than :data:`RLIMIT_PER_SECOND` on a busy machine). Only a
+check stopped by its resource limit stops at the same point on every run; one stopped by the clock says
+so in its reason."""
+
+WALL_SLACK = 0.1
+"""Seconds the wall clock adds to every check's limit, so that a check given a sliver of budget stops
+at its resource limit (and says so) rather than at a clock limit of a few milliseconds."""
+
+
+def wall_ms(seconds: float) -> int:
+    """The wall-clock limit of a check with ``seconds`` of budget, in milliseconds (z3's ``timeout``)."""
+    return int(1000 * (WALL * seconds + WALL_SLACK))
+
 
 Positions = dict[str, tuple[Fraction, Fraction]]
 
@@ -68,7 +79,7 @@ def unknown_reason(solver: z3.Solver, seconds: float) -> str:
         return f"budget exhausted (rlimit {rlimit(seconds):,}, about {seconds:.1f} s)"
     if any(word in reason for word in ("timeout", "canceled")):
         return (
-            f"stopped by the wall clock at {WALL * seconds:.1f} s, before its resource limit (rlimit "
+            f"stopped by the wall clock at {wall_ms(seconds) / 1000:.1f} s, before its resource limit (rlimit "
             f"{rlimit(seconds):,}): z3 ran slower than the budget assumes, so a less busy machine may decide it"
         )
     return reason
@@ -84,7 +95,7 @@ def solver_for(built: Built, seconds: float) -> z3.Solver:
     """A solver holding the obligation (and its lattice bounds), with a budget of ``seconds``."""
     solver = z3.Solver(ctx=built.ar.ctx)
     solver.set("rlimit", rlimit(seconds))
-    solver.set("timeout", int(WALL * seconds * 1000))
+    solver.set("timeout", wall_ms(seconds))
     solver.add(*built.assertions, *built.bounds)
     return solver
 
