@@ -54,38 +54,68 @@ def test_a_point_outside_a_disc_satisfies_one_sector_half_plane(px, py, r2, extr
 
 
 widths = st.fractions(min_value=Fraction(1, 4096), max_value=1, max_denominator=4096)
+weights = st.fractions(min_value=0, max_value=8, max_denominator=1000)
 
 
 @settings(max_examples=300)
-@given(rationals, rationals, radii2, params, widths)
-def test_a_point_outside_a_disc_between_a_gaps_directions_satisfies_its_sector_cut(px, py, r2, lo, width):
-    """The local cut a refinement adds: between ``u`` and ``v`` and outside the disc, ``w . l >= h``."""
+@given(weights, weights, radii2, params, widths)
+def test_a_point_outside_a_disc_between_a_gaps_directions_satisfies_its_sector_cut(a, b, r2, lo, width):
+    """The local cut a refinement adds: a point ``a u + b v`` (``a, b >= 0``: between the gap's two
+    directions, the gap wrapping past a full turn too) outside the disc has ``w . l >= h``."""
     u, v, w, h = sector(lo, lo + width, r2)
-    between = u[0] * py - u[1] * px >= 0 and px * v[1] - py * v[0] >= 0
-    if px * px + py * py < r2 or not between:
+    px, py = a * u[0] + b * v[0], a * u[1] + b * v[1]
+    if px * px + py * py < r2:
         return
     assert w[0] * px + w[1] * py >= h
 
 
-@settings(max_examples=200, deadline=None)
-@given(
-    st.fractions(min_value=Fraction(1, 10), max_value=Fraction(99, 100), max_denominator=1000),
-    st.floats(min_value=0, max_value=6.28),
-)
-def test_a_refinement_excludes_a_point_wrongly_put_outside(scale, angle):
-    """A point strictly inside the disc that the Boolean calls outside gets cuts that exclude it: z3,
-    given the point and the outside literal, finds the cuts unsatisfiable."""
-    ctx = z3.Context()
+def _outside_disc(ctx):
     x, y = z3.Real("x", ctx), z3.Real("y", ctx)
     boolean = z3.Bool("b", ctx)
     d = disc(x * x + y * y >= 4, boolean)
-    assert d is not None
-    u = direction(Fraction(round(angle / 6.2832 * 4 * 256), 256) % 4)
-    p = (2 * scale * u[0], 2 * scale * u[1])
-    cuts = d.refine(p, False, ctx)
+    assert d is not None and not d.inside_when_true
+    return d, x, y, boolean
+
+
+def _holds(cuts, ctx, x, y, boolean, p) -> bool:
+    """Whether the cuts allow the Boolean to say "outside" at the point ``p``."""
     solver = z3.Solver(ctx=ctx)
     solver.add(*cuts, boolean, x == z3.RealVal(p[0], ctx), y == z3.RealVal(p[1], ctx))
-    assert solver.check() == z3.unsat
+    return solver.check() == z3.sat
+
+
+near_one = st.fractions(min_value=Fraction(1, 10), max_value=Fraction(99999, 100000), max_denominator=10**6)
+angles = st.fractions(min_value=0, max_value=Fraction(3999, 1000), max_denominator=10**6)
+
+
+@settings(max_examples=150, deadline=None)
+@given(near_one, angles)
+def test_a_refinement_excludes_a_point_wrongly_put_outside(scale, s):
+    """A point strictly inside the disc that the Boolean calls outside gets cuts that exclude it (z3,
+    given the point and the outside literal, finds them unsatisfiable), however close to the circle
+    (several subdivisions) and whatever its angle (not only on the grid's rays), unless the refinement
+    says it cannot (no cuts)."""
+    ctx = z3.Context()
+    d, x, y, boolean = _outside_disc(ctx)
+    u = direction(s)
+    p = (2 * scale * u[0], 2 * scale * u[1])
+    cuts = d.refine(p, False, ctx)
+    assert cuts or scale > Fraction(9999, 10000)
+    if cuts:
+        assert not _holds(cuts, ctx, x, y, boolean, p)
+
+
+@settings(max_examples=100, deadline=None)
+@given(near_one, angles, st.fractions(min_value=1, max_value=3, max_denominator=1000), angles)
+def test_refinement_cuts_never_exclude_a_point_outside_the_disc(scale, s, far, t):
+    """The cuts, as z3 formulas, are consequences of "outside": after refining around an inside point,
+    any point outside the disc (here at distance 2 to 6, any angle) still satisfies all of them."""
+    ctx = z3.Context()
+    d, x, y, boolean = _outside_disc(ctx)
+    u, v = direction(s), direction(t)
+    cuts = d.refine((2 * scale * u[0], 2 * scale * u[1]), False, ctx) + d.cuts(ctx)
+    assert _holds(cuts, ctx, x, y, boolean, (2 * far * v[0], 2 * far * v[1]))
+    assert _holds(cuts, ctx, x, y, boolean, (2 * u[0], 2 * u[1]))  # on the circle, at the refined angle
 
 
 @settings(max_examples=300)

@@ -425,8 +425,8 @@ def _scenario_3_snapshots(model):
     ("z3_reason", "expected"),
     [
         ("max. resource limit exceeded", "budget exhausted (rlimit 4,000,000, about 2.0 s)"),
-        ("timeout", "stopped by the wall clock at 3.0 s, before its resource limit (rlimit 4,000,000)"),
-        ("canceled", "stopped by the wall clock at 3.0 s"),
+        ("timeout", "stopped by the wall clock at 3.1 s, before its resource limit (rlimit 4,000,000)"),
+        ("canceled", "stopped by the wall clock at 3.1 s"),
         ("(incomplete (theory arithmetic))", "(incomplete (theory arithmetic))"),
     ],
 )

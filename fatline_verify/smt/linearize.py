@@ -26,6 +26,7 @@ unit circle with small denominators, so the linear problems stay cheap.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 import time
@@ -88,6 +89,7 @@ def sqrt_up(x: Fraction) -> Fraction:
     return low if low * low >= x else low + Fraction(1, PRECISION)
 
 
+@functools.cache
 def direction(s: Fraction) -> Vec:
     """The exact rational unit vector at grid parameter ``s`` in [0, 4): quarter turn ``floor(s)``,
     then ``((1 - t^2), 2t) / (1 + t^2)`` for ``t = s - floor(s)`` (angle ``2 atan t``, monotone in s)."""
@@ -190,20 +192,19 @@ class Disc:
                     line = self.line(u, ctx)
                     return [z3.Implies(self.inside(), line < r if self.inside_when_true and self.strict else line <= r)]
             return []
-        return self._subdivide(p, parameter(angle), ctx)
+        return self._subdivide(p, ctx)
 
-    def _subdivide(self, p: Vec, at: float, ctx: z3.Context) -> list[z3.BoolRef]:
-        """Cuts for a point ``p`` the Boolean puts outside though it is inside: the grid's gap around
-        ``p``'s angle (parameter ``at``) is split in quarters, each quarter getting its own sector cut
-        (:func:`sector`, asserted where a point lies between its two directions), and the quarter
-        around ``p`` again until its cut excludes ``p`` (none when ``p`` lies on the circle too closely)."""
+    def _subdivide(self, p: Vec, ctx: z3.Context) -> list[z3.BoolRef]:
+        """Cuts for a point ``p`` the Boolean puts outside though it is inside: the grid's gap holding
+        ``p`` is split in quarters, each quarter getting its own sector cut (:func:`sector`, asserted
+        where a point lies between its two directions), and the quarter holding ``p`` again until its
+        cut excludes ``p``; none when ``p`` lies on the circle too closely (or is the centre). Which gap
+        holds ``p`` is decided exactly (cross products), so a returned set of cuts excludes ``p``."""
+        if p == (0, 0):
+            return []
         params = sorted(set(self.grid))
-        for i, lo in enumerate(params):
-            hi = params[i + 1] if i + 1 < len(params) else params[0] + 4
-            if lo <= at <= hi or lo <= at + 4 <= hi:
-                break
-        if at < lo:
-            at += 4
+        gaps = [(lo, params[i + 1] if i + 1 < len(params) else params[0] + 4) for i, lo in enumerate(params)]
+        lo, hi = next(g for g in gaps if _between(direction(g[0]), direction(g[1]), p))
         outside = z3.Not(self.inside())
         out: list[z3.BoolRef] = []
         for _ in range(SUBDIVISIONS):
@@ -213,8 +214,7 @@ class Disc:
                 u, v, w, h = sector(a, b, self.r2)
                 between = [self._cross(u, ctx) >= 0, -self._cross(v, ctx) >= 0]
                 out.append(z3.Implies(z3.And(outside, *between), self.line(w, ctx) >= h))
-            k = min(3, int((at - float(lo)) / float(hi - lo) * 4))
-            lo, hi = points[k], points[k + 1]
+            lo, hi = next(g for g in itertools.pairwise(points) if _between(direction(g[0]), direction(g[1]), p))
             u, v, w, h = sector(lo, hi, self.r2)
             if w[0] * p[0] + w[1] * p[1] < h:
                 return out
@@ -223,6 +223,12 @@ class Disc:
     def _cross(self, u: Vec, ctx: z3.Context) -> z3.ArithRef:
         """``u x l``: non-negative when ``l`` is counter-clockwise of ``u`` (within half a turn)."""
         return z3.RealVal(u[0], ctx) * self.terms[1] - z3.RealVal(u[1], ctx) * self.terms[0]
+
+
+def _between(u: Vec, v: Vec, p: Vec) -> bool:
+    """Whether ``p`` lies between the directions ``u`` and ``v`` (counter-clockwise from ``u``, at most
+    to ``v``; the gap under half a turn), exactly."""
+    return u[0] * p[1] - u[1] * p[0] >= 0 and p[0] * v[1] - p[1] * v[0] >= 0
 
 
 def _number(e: z3.ExprRef) -> Fraction | None:
