@@ -32,6 +32,7 @@ DEFAULT_WINDOW = (7, 7)
 def cmd_sweep(args: argparse.Namespace) -> int:
     from ..checker import CheckPlan
     from ..explore.workers import require_dask
+    from ..sweep.page import claim_pages, write_pages
     from ..sweep.run import Sweep, SweepBounds, sweep_lines
     from ..sweep.space import Space, parse_vary
 
@@ -50,6 +51,7 @@ def cmd_sweep(args: argparse.Namespace) -> int:
         Space(model, vary), SweepBounds(robots, window, args.engine, args.max_states), child(root, model.name), lemmas
     )
     resumed = sweep.resume()  # refuses another sweep's directory, before any work
+    claim_pages(sweep.out)
 
     def say(line: str) -> None:
         if not args.quiet:
@@ -59,11 +61,13 @@ def cmd_sweep(args: argparse.Namespace) -> int:
         say(f"resuming: {len(sweep.checks)} checks done, {sweep.open_count():,} combinations open")
     interrupted = False
     try:
-        sweep.run(args.max_checks, args.workers, args.cluster, say)
+        if args.max_checks != 0:
+            sweep.run(args.max_checks, args.workers, args.cluster, say)
     except KeyboardInterrupt:
         interrupted = True
     sweep.save()
-    lines = sweep_lines(sweep)
+    pages = write_pages(sweep, _command(args, model.name))
+    lines = [*sweep_lines(sweep), f"report page: {pages[0]}"]
     if interrupted:
         lines.append(f"INTERRUPTED: {len(sweep.checks)} checks finished and saved in {sweep.json_path}; "
                      "the same command resumes")  # fmt: skip
@@ -73,6 +77,16 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     if sweep.open_count():
         return EXIT_INCONCLUSIVE
     return EXIT_FOUND if sweep.witnesses else EXIT_OK
+
+
+def _command(args: argparse.Namespace, name: str) -> str:
+    """The command that resumes this sweep and rewrites its page (the settings that name the sweep)."""
+    parts = ["fatline sweep", args.model or name]
+    for flag in ("vary", "lemma", "robots", "window", "q", "max_states", "out"):
+        value = getattr(args, flag)
+        if value is not None and not (flag == "out" and str(value) == "sweeps"):
+            parts.append(f"--{flag.replace('_', '-')} {value}")
+    return " ".join(str(p) for p in parts)
 
 
 def parse_lemmas(text: str | None) -> tuple[Lemma, ...]:
@@ -107,9 +121,10 @@ def register(sub: Any) -> None:
     p.add_argument("--engine", choices=list(ENGINES), default=None, help="exploration engine")
     p.add_argument(
         "--max-checks",
-        type=integer("max-checks", 1),
+        type=integer("max-checks", 0),
         default=None,
-        help="stop after this many checks (default: until every combination is judged); rerun to go on",
+        help="stop after this many checks (default: until every combination is judged); rerun to go on; "
+        "0: no check, only the report page from what is saved",
     )
     p.add_argument(
         "--workers", type=integer("workers", 1, 1024), default=1, help="checks at once, on a local Dask cluster"

@@ -34,9 +34,9 @@ from .pictures import frames
 PAGES = ("README.md", "index.html")
 
 
-def stamp(name: str, text: str) -> str:
-    """``text`` with the generated-by marker, in the comment syntax of the file's kind."""
-    mark = f"{TEXT_MARKER}: fatline report"
+def stamp(name: str, text: str, command: str = "fatline report") -> str:
+    """``text`` with the generated-by marker (naming ``command``), in the comment syntax of the file's kind."""
+    mark = f"{TEXT_MARKER}: {command}"
     if name.endswith(".svg"):
         head, sep, rest = text.partition("?>\n")
         return f"{head}{sep}<!-- {mark} -->\n{rest}" if sep else f"<!-- {mark} -->\n{text}"

@@ -200,7 +200,7 @@ class Disc:
         where a point lies between its two directions), and the quarter holding ``p`` again until its
         cut excludes ``p``; none when ``p`` lies on the circle too closely (or is the centre). Which gap
         holds ``p`` is decided exactly (cross products), so a returned set of cuts excludes ``p``."""
-        if p == (0, 0):
+        if p[0] == 0 and p[1] == 0:
             return []
         params = sorted(set(self.grid))
         gaps = [(lo, params[i + 1] if i + 1 < len(params) else params[0] + 4) for i, lo in enumerate(params)]
