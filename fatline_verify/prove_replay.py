@@ -103,9 +103,12 @@ def replay(model: Model, spec: Spec, positions: dict[str, tuple[Fraction, Fracti
 
 
 def replay_known(model: Model, spec: Spec, doc: dict[str, Any]) -> Replayed | None:
-    """An earlier run's counterexample of ``spec`` (its trace file), replayed by the executable model
-    as the search would replay a solver's answer: the same case, the same claim broken, from an
-    initial configuration; ``None`` if it does not (the readings changed, say), and the search runs."""
+    """An earlier run's counterexample of ``spec`` (its trace file, or for a claim without a trace its
+    results row's ``configuration``), replayed by the executable model as the search would replay a
+    solver's answer: the same case, the same claim broken, from an initial configuration; ``None`` if
+    it does not (the readings changed, say), and the search runs."""
+    if "configuration" in doc:
+        return _replay_configuration(model, spec, doc["configuration"])
     try:
         state = initial_radii(doc)
         j = int(doc["violation"]["robots"][1])
@@ -117,6 +120,29 @@ def replay_known(model: Model, spec: Spec, doc: dict[str, Any]) -> Replayed | No
     positions = {"r": state[0], **{f"x{k}": p for k, p in enumerate(state[1:], 1) if k != j}, focus: state[j]}
     got = replay(model, spec, {k: (Fraction(x), Fraction(y)) for k, (x, y) in positions.items()}, focus)
     return got if isinstance(got, Replayed) and got.initial and got.doc is not None else None
+
+
+def _replay_configuration(model: Model, spec: Spec, configuration: Any) -> Replayed | None:
+    """A trace-less counterexample (``x,y`` strings in lattice units, r first) replayed; for ``closer``
+    each other robot is tried as the one r does not get closer to."""
+    try:
+        raw = [tuple(Fraction(v) for v in str(p).split(",")) for p in configuration]
+    except (TypeError, ValueError, ZeroDivisionError):
+        return None
+    if not raw or any(len(p) != 2 for p in raw):
+        return None
+    points = [model.from_lattice((p[0], p[1])) for p in raw]
+    r = points[0]
+    others = {f"x{k}": (Fraction(p[0] - r[0]), Fraction(p[1] - r[1])) for k, p in enumerate(points[1:], 1)}
+    focuses = list(others) if spec.form == CLOSER else [""]
+    for focus in focuses:
+        positions = {"r": (Fraction(0), Fraction(0)), **others}
+        if focus:
+            positions["o"] = positions.pop(focus)
+        got = replay(model, spec, positions, "o" if focus else "")
+        if isinstance(got, Replayed) and got.initial:
+            return got
+    return None
 
 
 def _claim_fails(model: Model, spec: Spec, state: Sequence[Point], dec: Decision, j: int | None) -> str | None:

@@ -55,7 +55,7 @@ class ProofResult:
     other: str = ""
     configuration: tuple[str, ...] = ()
     """For a claim without a trace (``seen``, ``x-nondecreasing``, ``closer``): the replayed
-    configuration, r first, as exact ``x,y`` strings in radii."""
+    configuration, r first, as exact ``x,y`` strings in lattice units (radii when q = 1)."""
 
     @property
     def key(self) -> str:

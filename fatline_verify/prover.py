@@ -18,7 +18,7 @@ header. Each obligation runs in a fresh process (:mod:`fatline_verify.fresh`). T
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -128,6 +128,7 @@ def prove(
     tasks: list[Task] | None = None,
     on_result: Callable[[ProofResult], None] | None = None,
     traces: Path | None = None,
+    earlier: Mapping[str, dict[str, Any]] | None = None,
 ) -> list[ProofResult]:
     """Every obligation of ``lemmas`` (or exactly ``tasks``) for ``model``; ``.smt2`` files under ``out``.
 
@@ -135,7 +136,9 @@ def prove(
     spreads them over the cores. ``on_result`` sees each result as it finishes (so a caller can save
     it at once); the list returned is in task order. An interrupt stops the workers and propagates.
     ``traces``: where earlier runs wrote their counterexamples (default ``out/traces``); an
-    obligation's own is replayed before any search, so a counterexample once found stays found.
+    obligation's own is replayed before any search, so a counterexample once found stays found;
+    ``earlier``: an earlier run's results rows by obligation key, whose replayed configurations (the
+    claims without a trace: ``closer``, ``seen``, ``x-nondecreasing``) are replayed first likewise.
     """
     tasks = tasks_for(model, lemmas) if tasks is None else tasks
     if not tasks:
@@ -151,6 +154,7 @@ def prove(
         elif isinstance(task, Spec):
             note = PAPER_PART_NOTE if model.options.repaired else ""
             known = _known(model, task, traces if traces is not None else out / "traces" if out else None)
+            known = known or _known_configuration(task, earlier)
             kwargs = {"timeout": timeout, "out": out, "note": note, "known": known}
             calls.append((prove_spec, (paper_part(model), task), kwargs))
         else:
@@ -186,6 +190,15 @@ def _known(model: Model, task: Spec, traces: Path | None) -> dict[str, Any] | No
     return read_json(path) if path.is_file() and is_output(path, Kind.TRACE) else None
 
 
+def _known_configuration(task: Spec, earlier: Mapping[str, dict[str, Any]] | None) -> dict[str, Any] | None:
+    """The configuration an earlier run replayed as a counterexample of ``task`` (a claim without a
+    trace), from its results row, if any."""
+    row = (earlier or {}).get(task.key)
+    if row is None or row.get("verdict") != "VIOLATED" or not row.get("configuration"):
+        return None
+    return {"configuration": list(row["configuration"])}
+
+
 def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     """What a prover result depends on: the model, the settings, the encoding's version."""
     from .cache import fingerprint
@@ -210,7 +223,9 @@ the one relaxation of the obligation, with a share of its own taken from the lat
 the linearization wrongly puts outside a disc gets local sector cuts (the whole cover was rebuilt on
 a finer grid: most of the time went to Python, not z3), its budget counted at 3 times the nonlinear
 rate (was 4), a polish repeated at most 3 times per set of free unknowns, and a check's clock limit
-0.1 s above 1.5 times its budget (a sliver of budget stopped by the clock was reported as load)."""
+0.1 s above 1.5 times its budget (a sliver of budget stopped by the clock was reported as load),
+and an earlier run's counterexample of a claim without a trace (its row's configuration) replayed
+first, as traces were."""
 
 
 __all__ = [

@@ -70,6 +70,7 @@ def cmd_prove(args: argparse.Namespace) -> int:
                 on_result=store.add,
                 progress=bar.step,
                 traces=traces_dir,
+                earlier=store.rows,
             )
         except KeyboardInterrupt:
             interrupted = True
