@@ -20,7 +20,18 @@ def _fake_prove(verdict: Verdict):
     """A stand-in for the solver: every obligation asked for gets ``verdict`` at once."""
 
     def fake(
-        model, lemmas=(), *, slots, timeout, out, jobs=None, progress=None, tasks=None, on_result=None, traces=None
+        model,
+        lemmas=(),
+        *,
+        slots,
+        timeout,
+        out,
+        jobs=None,
+        progress=None,
+        tasks=None,
+        on_result=None,
+        traces=None,
+        earlier=None,
     ):
         tasks = prover.tasks_for(model, lemmas) if tasks is None else tasks
         results = []

@@ -322,10 +322,10 @@ def test_the_budget_grows_in_rounds_and_is_spent_in_full(timeout, expected):
 
 
 def test_a_counterexample_beyond_the_first_round_is_found_in_a_later_one():
-    """Scenario 2, up-2 after down (paper): no initial lost edge within the first round's 2 s, one
+    """Scenario 2, up-1 after down (paper): no initial lost edge within the first round's 2 s, one
     later (the linearization finds a violation that is not initial, then an initial one)."""
     model = make_model()
-    spec = _spec(model, "connectivity/one-mover-scenario-2.up-2-after-down")
+    spec = _spec(model, "connectivity/one-mover-scenario-2.up-1-after-down")
     first = isolated(prove_spec, model, spec, timeout=2, out=None)
     later = isolated(prove_spec, model, spec, timeout=20, out=None)
     assert first.verdict is Verdict.INCONCLUSIVE

@@ -49,6 +49,7 @@ body { font-family: system-ui, sans-serif; max-width: 1100px; margin: 2em auto; 
 body.wide { max-width: 1340px; }
 table { border-collapse: collapse; margin: 1em 0; font-size: 0.9em; }
 th, td { border: 1px solid #ccc; padding: 0.3em 0.6em; text-align: left; vertical-align: top; }
+td { overflow-wrap: anywhere; }
 th { background: #f3f3f3; }
 .VIOLATED { background: #fde0e0; } .HOLDS_WITHIN_BOUNDS { background: #e3f4e3; }
 .PROVED { background: #c8ecc8; } .INCONCLUSIVE { background: #fff4d6; }

@@ -26,7 +26,7 @@ LISTED = 20
 CSS = """
 body { font-family: system-ui, sans-serif; max-width: 1100px; margin: 2em auto; padding: 0 1em; color: #222; }
 table { border-collapse: collapse; margin: 0.5em 0 1em; }
-th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: right; }
+th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: right; overflow-wrap: anywhere; }
 th:first-child, td:first-child { text-align: left; }
 .witness { border: 1px solid #ddd; border-radius: 6px; padding: 0.6em; margin: 0.6em 0; }
 .witness img { width: 360px; margin-right: 0.5em; border: 1px solid #eee; }
