@@ -119,14 +119,7 @@ def cover(grid: list[Fraction], r2: Fraction) -> list[tuple[Vec, Fraction]]:
     between consecutive directions ``u``, ``v`` of ``grid`` (each gap under half a turn),
     ``w = u + v`` and ``h = R (1 + u . v)`` with ``R`` at most ``sqrt(r2)``."""
     params = sorted(set(grid))
-    r = sqrt_down(r2)
-    out = []
-    for i, s in enumerate(params):
-        u, v = direction(s), direction(params[(i + 1) % len(params)])
-        if u[0] * v[1] - u[1] * v[0] <= 0:
-            raise ValueError("a grid gap of half a turn or more")
-        out.append(((u[0] + v[0], u[1] + v[1]), r * (1 + u[0] * v[0] + u[1] * v[1])))
-    return out
+    return [sector(s, params[(i + 1) % len(params)], r2)[2:] for i, s in enumerate(params)]
 
 
 def sector(lo: Fraction, hi: Fraction, r2: Fraction) -> tuple[Vec, Vec, Vec, Fraction]:
@@ -210,12 +203,11 @@ class Disc:
         for _ in range(SUBDIVISIONS):
             points = [lo + (hi - lo) * k / 4 for k in range(5)]
             self.grid += [s - 4 if s >= 4 else s for s in points[1:4]]
-            for a, b in itertools.pairwise(points):
-                u, v, w, h = sector(a, b, self.r2)
+            quarters = [((a, b), sector(a, b, self.r2)) for a, b in itertools.pairwise(points)]
+            for _, (u, v, w, h) in quarters:
                 between = [self._cross(u, ctx) >= 0, -self._cross(v, ctx) >= 0]
                 out.append(z3.Implies(z3.And(outside, *between), self.line(w, ctx) >= h))
-            lo, hi = next(g for g in itertools.pairwise(points) if _between(direction(g[0]), direction(g[1]), p))
-            u, v, w, h = sector(lo, hi, self.r2)
+            (lo, hi), (u, v, w, h) = next(q for q in quarters if _between(q[1][0], q[1][1], p))
             if w[0] * p[0] + w[1] * p[1] < h:
                 return out
         return []

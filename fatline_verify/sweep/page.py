@@ -11,12 +11,12 @@ from typing import Any
 
 import numpy as np
 
-from ..outputs import Kind, claim_files, is_output
+from ..outputs import Kind, claim_files, is_output, write_text
 from ..properties import Lemma
 from ..report.build import stamp
 from ..report.pictures import frame_svg
 from ..trace import check_replay, load_trace
-from .run import HOLDS, INCONCLUSIVE, OPEN, REFUTED, Sweep, headline
+from .run import HOLDS, Sweep, headline
 
 PAGES = ("index.html", "README.md")
 COMMAND = "fatline sweep"
@@ -60,10 +60,9 @@ def _pictures(sweep: Sweep, witness: dict[str, Any], k: int) -> list[str]:
     names = []
     for tag, index in (("start", first), ("end", last)):
         path = sweep.out / "img" / f"{witness['lemma']}-{k}-{tag}.svg"
-        path.parent.mkdir(parents=True, exist_ok=True)
         if path.exists() and not is_output(path, Kind.PAGE):
             continue
-        path.write_text(stamp(path.name, frame_svg(run, index, doc), COMMAND), encoding="utf-8")
+        write_text(path, stamp(path.name, frame_svg(run, index, doc), COMMAND))
         names.append(f"img/{path.name}")
     return names
 
@@ -83,12 +82,6 @@ def survivors(sweep: Sweep, lemma: Lemma) -> tuple[int, list[tuple[str, Counter[
     return len(where), per_option, listed
 
 
-def _counts(sweep: Sweep, lemma: Lemma) -> dict[str, int]:
-    status = sweep.status[lemma]
-    return {name: int((status == code).sum()) for name, code in
-            (("refuted", REFUTED), ("holds", HOLDS), ("inconclusive", INCONCLUSIVE), ("open", OPEN))}  # fmt: skip
-
-
 def write_pages(sweep: Sweep, command: str) -> list[Path]:
     """Write the sweep's HTML and Markdown pages (and the witnesses' pictures); the paths written."""
     b = sweep.bounds
@@ -105,9 +98,9 @@ def write_pages(sweep: Sweep, command: str) -> list[Path]:
     head = ["lemma", "readings", "refuted", "holds", "inconclusive", "open", "counterexamples"]
     rows = []
     for lemma in sweep.lemmas:
-        c = _counts(sweep, lemma)
-        k = sum(1 for w in sweep.witnesses if w["lemma"] == lemma.value)
-        rows.append([lemma.value, f"{sweep.spaces[lemma].size:,}", *(f"{c[n]:,}" for n in head[2:6]), str(k)])
+        c = sweep.lemma_summary(lemma)
+        counts = (f"{c[n]:,}" for n in head[2:6])
+        rows.append([lemma.value, f"{c['combinations']:,}", *counts, str(c["counterexamples"])])
     h.append("<table><tr>" + "".join(f"<th>{x}</th>" for x in head) + "</tr>")
     h += ["<tr>" + "".join(f"<td>{html.escape(x)}</td>" for x in r) + "</tr>" for r in rows]
     h.append("</table>")
@@ -159,5 +152,5 @@ def write_pages(sweep: Sweep, command: str) -> list[Path]:
     )
     paths = page_files(sweep.out)
     for path, text in zip(paths, (page, "\n".join(md) + "\n"), strict=True):
-        path.write_text(stamp(path.name, text, COMMAND), encoding="utf-8")
+        write_text(path, stamp(path.name, text, COMMAND))
     return paths
