@@ -102,11 +102,17 @@ def replay(model: Model, spec: Spec, positions: dict[str, tuple[Fraction, Fracti
     return Replayed(state, j, initial, problems, doc, what)
 
 
-def replay_known(model: Model, spec: Spec, doc: dict[str, Any]) -> Replayed | None:
+Known = tuple[str, dict[str, Any]]
+"""A counterexample to replay before any search: where it was found (as the reason will say), and its
+trace, or for a claim without a trace ``{"configuration": [...]}``."""
+
+
+def replay_known(model: Model, spec: Spec, doc: dict[str, Any], *, initial: bool = True) -> Replayed | None:
     """An earlier run's counterexample of ``spec`` (its trace file, or for a claim without a trace its
     results row's ``configuration``), replayed by the executable model as the search would replay a
     solver's answer: the same case, the same claim broken, from an initial configuration; ``None`` if
-    it does not (the readings changed, say), and the search runs."""
+    it does not (the readings changed, say), and the search runs. ``initial=False`` also returns a
+    violation from a configuration that is not initial (an earlier INCONCLUSIVE row's trace)."""
     if "configuration" in doc:
         return _replay_configuration(model, spec, doc["configuration"])
     try:
@@ -119,7 +125,7 @@ def replay_known(model: Model, spec: Spec, doc: dict[str, Any]) -> Replayed | No
     focus = "s" if spec.form == TWO_MOVERS else "o"
     positions = {"r": state[0], **{f"x{k}": p for k, p in enumerate(state[1:], 1) if k != j}, focus: state[j]}
     got = replay(model, spec, {k: (Fraction(x), Fraction(y)) for k, (x, y) in positions.items()}, focus)
-    return got if isinstance(got, Replayed) and got.initial and got.doc is not None else None
+    return got if isinstance(got, Replayed) and (got.initial or not initial) and got.doc is not None else None
 
 
 def _replay_configuration(model: Model, spec: Spec, configuration: Any) -> Replayed | None:

@@ -33,11 +33,11 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from .config import Model
 from .properties import Verdict
-from .prove_replay import Replayed, replay, replay_known
+from .prove_replay import Known, Replayed, replay, replay_known
 from .prove_tasks import ProofResult
 from .smt.claims import (
     TWO_MOVERS,
@@ -379,7 +379,7 @@ class _Search(Budget):
 
 
 def prove_spec(
-    model: Model, spec: Spec, *, timeout: float, out: Path | None, note: str = "", known: dict[str, Any] | None = None
+    model: Model, spec: Spec, *, timeout: float, out: Path | None, note: str = "", known: Sequence[Known] = ()
 ) -> ProofResult:
     """Decide one obligation (see the module docstring); write its real-number form under ``out``.
 
@@ -401,9 +401,15 @@ def prove_spec(
         write(full, target)
         path = target.as_posix()
     search = _Search(model, spec, full, path, timeout)
-    again = replay_known(model, spec, known) if known is not None else None
-    if again is not None:
-        return search.result(Verdict.VIOLATED, _found(again, "an earlier run's counterexample, replayed first"), again)
+    for where, doc in known:
+        again = replay_known(model, spec, doc, initial=False)
+        if again is not None and again.initial:
+            return search.result(Verdict.VIOLATED, _found(again, f"{where}, replayed first"), again)
+        if again is not None and search.non_initial is None:
+            # A violation is known to exist (so no unsat can come): the search looks for an initial one,
+            # and if it finds none the verdict keeps this configuration instead of losing it.
+            search.non_initial = again
+            search.linear_done = True
     for budget in rounds(timeout):
         before = search.spent
         found = search.vacuous(budget) or search.lattices(budget)

@@ -25,7 +25,7 @@ from typing import Any
 from .config import Model
 from .fresh import isolated, run_fresh
 from .properties import Lemma, Verdict
-from .prove_replay import Replayed, replay, replay_known
+from .prove_replay import Known, Replayed, replay, replay_known
 from .prove_search import MIN_CHECK, Budget, prove_spec, rounds, rounds_text
 from .prove_tasks import (
     DEFAULT_SLOTS,
@@ -153,8 +153,9 @@ def prove(
             calls.append((prove_leg, (model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, Spec):
             note = PAPER_PART_NOTE if model.options.repaired else ""
-            known = _known(model, task, traces if traces is not None else out / "traces" if out else None)
-            known = known or _known_configuration(task, earlier)
+            own = _known(model, task, traces if traces is not None else out / "traces" if out else None)
+            own = own or _known_configuration(task, earlier)
+            known = ([(EARLIER, own)] if own else []) + _known_beside(model, task, out)
             kwargs = {"timeout": timeout, "out": out, "note": note, "known": known}
             calls.append((prove_spec, (paper_part(model), task), kwargs))
         else:
@@ -190,6 +191,29 @@ def _known(model: Model, task: Spec, traces: Path | None) -> dict[str, Any] | No
     return read_json(path) if path.is_file() and is_output(path, Kind.TRACE) else None
 
 
+def _known_beside(model: Model, task: Spec, out: Path | None) -> list[Known]:
+    """The same obligation's counterexample traces under the other models proved beside this one
+    (``OUT/../OTHER/traces``), in name order. A reading that does not bear on the case leaves such a
+    trace a counterexample here too; the replay (:func:`replay_known`) decides, under this model, that
+    its r decides the same case, breaks the same claim and starts from an initial configuration."""
+    from .outputs import Kind, is_output, read_json
+
+    if out is None or not out.parent.is_dir():
+        return []
+    _, rest = task.key.split("/", 1)
+    found: list[Known] = []
+    for results in sorted(out.parent.glob("*/results.json")):
+        other = results.parent
+        if other.resolve() == out.resolve() or not is_output(results, Kind.PROVE):
+            continue
+        path = other / "traces" / f"{other.name}-prove-{task.lemma}-{rest}.json"
+        if path.is_file() and is_output(path, Kind.TRACE):
+            doc = read_json(path)
+            if doc is not None:
+                found.append((f"a counterexample found under model {other.name}", doc))
+    return found
+
+
 def _known_configuration(task: Spec, earlier: Mapping[str, dict[str, Any]] | None) -> dict[str, Any] | None:
     """The configuration an earlier run replayed as a counterexample of ``task`` (a claim without a
     trace), from its results row, if any."""
@@ -197,6 +221,10 @@ def _known_configuration(task: Spec, earlier: Mapping[str, dict[str, Any]] | Non
     if row is None or row.get("verdict") != "VIOLATED" or not row.get("configuration"):
         return None
     return {"configuration": list(row["configuration"])}
+
+
+EARLIER = "an earlier run's counterexample"
+"""Where an obligation's own counterexample from an earlier run comes from, as its reason says."""
 
 
 def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:

@@ -3,11 +3,13 @@ configuration of a ``closer``, ``seen`` or ``x-nondecreasing`` row) is replayed 
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from fatline_verify.config import load_model
 from fatline_verify.properties import Verdict
 from fatline_verify.prove_replay import replay_known
 from fatline_verify.prove_search import prove_spec
-from fatline_verify.prover import _known_configuration, tasks_for
+from fatline_verify.prover import EARLIER, _known_beside, _known_configuration, tasks_for
 
 # paper, closer, scenario 2 down-1: r moves to (73/30, -1) and is not closer to (73/30, 31/10) in B
 CONFIGURATION = ["0,0", "73/30,1", "73/30,31/10"]
@@ -26,7 +28,7 @@ def test_a_stored_configuration_is_replayed_first_and_decides():
     assert known == {"configuration": CONFIGURATION}
     got = replay_known(model, task, known)
     assert got is not None and got.initial and "not closer" in got.what
-    result = prove_spec(model, task, timeout=5.0, out=None, known=known)
+    result = prove_spec(model, task, timeout=5.0, out=None, known=[(EARLIER, known)])
     assert result.verdict is Verdict.VIOLATED and "earlier run's counterexample" in result.reason
 
 
@@ -40,3 +42,84 @@ def test_a_stored_configuration_that_no_longer_breaks_the_claim_is_searched_past
     assert replay_known(model, task, {"configuration": ["0,0", "x,1"]}) is None
     other = _task(model, "connectivity/closer-scenario-3.up-1")  # another case: r's decision differs
     assert replay_known(model, other, {"configuration": CONFIGURATION}) is None
+
+
+UP_2 = "no-collision/one-mover-scenario-2.up-2-after-down"
+
+
+def _beside(tmp_path, sibling: str, key: str, doc) -> Path:
+    """A proofs root holding ``sibling``'s results and its trace of ``key``; returns the directory
+    another model's obligations would be written to."""
+    from fatline_verify.outputs import Kind, write_json
+    from fatline_verify.trace import write_trace
+
+    lemma, rest = key.split("/", 1)
+    write_json(tmp_path / sibling / "results.json", {"format": Kind.PROVE.value, "model": sibling, "obligations": []})
+    write_trace(doc, tmp_path / sibling / "traces" / f"{sibling}-prove-{lemma}-{rest}.json")
+    return tmp_path / "paper"
+
+
+def test_a_counterexample_found_under_a_model_beside_is_replayed_first(tmp_path):
+    """The same obligation's counterexample under another model proved beside this one decides here
+    when the replay under this model keeps the case and the claim (uncovered=stay does not bear on
+    Scenario 2's search); the reason names the model it was found under."""
+    from fatline_verify.trace import check_replay, load_trace
+
+    root = Path(__file__).resolve().parent.parent / "proofs"
+    doc = load_trace(
+        root
+        / "paper-uncovered-stay"
+        / "traces"
+        / "paper-uncovered-stay-prove-no-collision-one-mover-scenario-2.up-2-after-down.json"
+    )
+    model = load_model("paper")
+    task = _task(model, UP_2)
+    out = _beside(tmp_path, "paper-uncovered-stay", UP_2, doc)
+    known = _known_beside(model, task, out)
+    assert [where for where, _ in known] == ["a counterexample found under model paper-uncovered-stay"]
+    result = prove_spec(model, task, timeout=0.05, out=None, known=known)
+    assert result.verdict is Verdict.VIOLATED, result.reason
+    assert "found under model paper-uncovered-stay, replayed first" in result.reason
+    assert result.witness is not None
+    check_replay(result.witness, model)
+
+
+def test_a_counterexample_beside_that_does_not_replay_here_is_searched_past(tmp_path):
+    """Another obligation's trace, or one under a reading that changes the case, decides nothing: the
+    search runs (and with almost no budget says INCONCLUSIVE, never VIOLATED)."""
+    from fatline_verify.trace import load_trace
+
+    root = Path(__file__).resolve().parent.parent / "proofs"
+    doc = load_trace(root / "paper" / "traces" / "paper-prove-no-collision-one-mover-scenario-1.json")
+    model = load_model("paper")
+    task = _task(model, UP_2)
+    out = _beside(tmp_path, "paper-centralized", UP_2, doc)  # filed under UP_2, but a Scenario 1 trace
+    known = _known_beside(model, task, out)
+    assert len(known) == 1
+    result = prove_spec(model, task, timeout=0.05, out=None, known=known)
+    assert result.verdict is not Verdict.VIOLATED and "replayed first" not in result.reason
+    assert _known_beside(model, task, None) == []
+    foreign = _beside(tmp_path, "foreign", UP_2, doc).parent / "foreign"
+    (foreign / "results.json").write_text("{}")  # not a prover's results: its traces are not read
+    assert len(_known_beside(model, task, out)) == 1
+
+
+def test_an_earlier_non_initial_violation_is_kept_when_no_initial_one_is_found():
+    """An INCONCLUSIVE row's own trace (a violation from a configuration that is not initial) is
+    replayed first: with no budget left for a search, the verdict stays INCONCLUSIVE and keeps that
+    configuration and its trace, instead of losing them to a budget-only reason."""
+    from fatline_verify.trace import load_trace
+
+    key = "no-collision/one-mover-scenario-4-I-nonempty.from-uncovered-both"
+    root = Path(__file__).resolve().parent.parent / "proofs" / "paper-drop-touch" / "traces"
+    doc = load_trace(root / f"paper-drop-touch-prove-{key.replace('/', '-')}.json")
+    model = load_model("paper-drop-touch")
+    task = _task(model, key)
+    assert replay_known(model, task, doc) is None  # not initial: it decides nothing on its own
+    got = replay_known(model, task, doc, initial=False)
+    assert got is not None and not got.initial and got.problems
+    result = prove_spec(model, task, timeout=0.05, out=None, known=[(EARLIER, doc)])
+    assert result.verdict is Verdict.INCONCLUSIVE, result.reason
+    assert "not initial" in result.reason and got.problems[0] in result.reason
+    assert result.witness is not None
+    assert sorted(map(str, result.witness["initial"])) == sorted(map(str, doc["initial"]))  # the same robots

@@ -356,14 +356,20 @@ def test_an_earlier_counterexample_is_replayed_before_any_search():
     root = Path(__file__).resolve().parent.parent / "proofs" / "paper" / "traces"
     own = load_trace(root / "paper-prove-no-collision-one-mover-scenario-1.json")
     spec = _spec(model, "no-collision/one-mover-scenario-1")
-    got = prove_spec(model, spec, timeout=0.05, out=None, known=own)
+    got = prove_spec(model, spec, timeout=0.05, out=None, known=[("an earlier run's counterexample", own)])
     assert got.verdict is Verdict.VIOLATED and "replayed first" in got.reason and got.witness is not None
     check_replay(got.witness, model)
     other = _spec(model, "connectivity/one-mover-scenario-1")
-    missed = prove_spec(model, other, timeout=0.05, out=None, known=own)
+    missed = prove_spec(model, other, timeout=0.05, out=None, known=[("an earlier run's counterexample", own)])
     assert "replayed first" not in missed.reason
     fine = make_model(q=2)  # a trace stores radii, whatever the lattice of either model
-    again = prove_spec(fine, _spec(fine, "no-collision/one-mover-scenario-1"), timeout=0.05, out=None, known=own)
+    again = prove_spec(
+        fine,
+        _spec(fine, "no-collision/one-mover-scenario-1"),
+        timeout=0.05,
+        out=None,
+        known=[("an earlier run's counterexample", own)],
+    )
     assert again.verdict is Verdict.VIOLATED and "replayed first" in again.reason, again.reason
 
 
