@@ -193,3 +193,26 @@ def test_every_sweep_verdict_is_what_the_checker_says_at_that_combination(tmp_pa
         equivalent += int((sweep.status[lemma] == HOLDS).sum())
     assert len(sweep.checks) < sum(s.size for s in sweep.spaces.values())  # it did not check each one
     assert equivalent > len([c for c in sweep.checks if "HOLDS_WITHIN_BOUNDS" in c["verdicts"].values()])
+
+
+def test_a_bound_nothing_escapes_from_decides_termination_where_the_window_alone_cannot(tmp_path, capsys):
+    """Without --bound, successors leave the 7x7 window and termination is INCONCLUSIVE wherever
+    progress holds; with --bound 11x11 nothing escapes and it holds there. The bound is saved, named on
+    the page, and part of the sweep's settings (another bound is another sweep); a sweep without it
+    keeps the fingerprint it had before the option existed."""
+    argv = ("sweep", "paper", "--vary", "contact,goal,vacant", "--lemma", "progress,termination", "--robots", "2..3")
+    rows = {}
+    for name, extra in (("window", ()), ("bound", ("--bound", "11x11"))):
+        code, _, err = run(capsys, *argv, "--window", "7x7", *extra, "--out", str(tmp_path / name), "-q")
+        assert code in (0, 1), err
+        data = json.loads((tmp_path / name / "paper" / "sweep.json").read_text())
+        rows[name] = {r["lemma"]: r for r in data["lemmas"]}
+        assert ("bound" in data["bounds"]) == (name == "bound")
+    assert rows["window"]["progress"]["holds"] == rows["bound"]["progress"]["holds"] > 0
+    assert rows["window"]["termination"]["inconclusive"] == rows["window"]["progress"]["holds"]
+    assert rows["bound"]["termination"]["holds"] == rows["bound"]["progress"]["holds"]
+    assert rows["bound"]["termination"]["inconclusive"] == 0
+    assert "explored within 11x11" in (tmp_path / "bound" / "paper" / "index.html").read_text()
+    code, _, err = run(capsys, *argv, "--window", "7x7", "--bound", "13x13", "--out", str(tmp_path / "bound"))
+    assert code == 2 and "other settings" in err
+    assert SweepBounds((2, 3), (7, 7)).as_json() == {"robots": [2, 3], "window": [7, 7], "max_states": None}

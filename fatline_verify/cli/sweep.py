@@ -43,12 +43,16 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     lemmas = parse_lemmas(args.lemma)
     robots = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else DEFAULT_ROBOTS
     window = parse_window(args.window, error=InvalidInput) if args.window is not None else DEFAULT_WINDOW
-    CheckPlan.of(model, robots, window, args.max_states, args.engine)  # what a check would refuse, refused now
+    bound = parse_window(args.bound, error=InvalidInput, name="bound") if args.bound is not None else None
+    CheckPlan.of(model, robots, window, args.max_states, args.engine, bound=bound)  # refused now, not per check
     if args.cluster is not None or args.workers > 1:
         require_dask(f"workers={args.workers}" if args.cluster is None else f"cluster={args.cluster!r}")
     root = claim_dir(args.out, name="out")
     sweep = Sweep(
-        Space(model, vary), SweepBounds(robots, window, args.engine, args.max_states), child(root, model.name), lemmas
+        Space(model, vary),
+        SweepBounds(robots, window, args.engine, args.max_states, bound),
+        child(root, model.name),
+        lemmas,
     )
     resumed = sweep.resume()  # refuses another sweep's directory, before any work
     claim_pages(sweep.out)
@@ -82,7 +86,7 @@ def cmd_sweep(args: argparse.Namespace) -> int:
 def _command(args: argparse.Namespace, name: str) -> str:
     """The command that resumes this sweep and rewrites its page (the settings that name the sweep)."""
     parts = ["fatline sweep", args.model or name]
-    for flag in ("vary", "lemma", "robots", "window", "q", "max_states", "out"):
+    for flag in ("vary", "lemma", "robots", "window", "bound", "q", "max_states", "out"):
         value = getattr(args, flag)
         if value is not None and not (flag == "out" and str(value) == "sweeps"):
             parts.append(f"--{flag.replace('_', '-')} {value}")
@@ -116,6 +120,11 @@ def register(sub: Any) -> None:
         help=f"robot count or range checked per combination (default {DEFAULT_ROBOTS[0]}..{DEFAULT_ROBOTS[1]})",
     )
     p.add_argument("--window", help=f"WIDTHxHEIGHT lattice points (default {DEFAULT_WINDOW[0]}x{DEFAULT_WINDOW[1]})")
+    p.add_argument(
+        "--bound",
+        help="WIDTHxHEIGHT lattice points that bound each exploration (default: the window); a liveness lemma "
+        "whose search lets a successor escape is INCONCLUSIVE there, so a bound nothing escapes from decides it",
+    )
     p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")
     p.add_argument("--max-states", type=integer("max-states", 1, 10**10), help="stop a search after this many states")
     p.add_argument("--engine", choices=list(ENGINES), default=None, help="exploration engine")

@@ -14,9 +14,19 @@ whose *continued graph, as this lemma sees it* is c's:
 Then c' explores the same continued graph, and the lemma's verdict there is c's: it holds. It holds
 under the checker's own semantics too (``after_violation = stop``), which explores a subgraph from the
 same initial states: a step lemma is violated on no edge of the subgraph; a deadlock or a fair cycle
-of the subgraph is one of the whole graph (fairness is read from the same enabled sets). Each
-signature is judged with :func:`fatline_verify.sweep.cover.cover`, one batch of states at a time; the
-surviving set shrinks as it goes.
+of the subgraph is one of the whole graph (fairness is read from the same enabled sets).
+
+A lemma that holds at c only under the checker's own semantics (a liveness lemma where some round
+collides: past it the swarm has left the model, and the continued graph may deadlock) closes, the
+same way, every c' whose *stopped graph* is c's: the same initial states and, for every state c's
+own check expanded, the same expansion as above plus which transitions violate anything (those the
+checker does not follow). By induction over the levels, c' then expands exactly c's states with c's
+transitions, so every verdict read from them is c's (:func:`fatline_verify.checker.lemma_verdicts`
+reads only expanded states, their enabled sets and transitions, and the goal). The stopped graph
+is smaller, so it also closes readings that differ only past a violation.
+
+Each signature is judged with :func:`fatline_verify.sweep.cover.cover`, one batch of states at a
+time; the surviving set shrinks as it goes.
 """
 
 from __future__ import annotations
@@ -48,6 +58,13 @@ class Explored:
     bound: tuple[int, int]
     window: tuple[int, int]
     expanded: np.ndarray
+    stopped: bool = False
+    """Explored as the checker does (``after_violation = stop``): the signature then also holds which
+    transitions violate anything."""
+
+    @classmethod
+    def of(cls, ex: Exploration, stopped: bool) -> Explored:
+        return cls(ex.n, ex.window, ex.start_window, ex.keys[ex.expanded], stopped)
 
 
 def held_past_violations(ex: Exploration) -> frozenset[Lemma]:
@@ -79,12 +96,17 @@ def _initial_sig(n: int, bound: tuple[int, int], window: tuple[int, int], model:
     return initial_keys_for(system, n, window, system.codec(n, bound)).tobytes()
 
 
-def _expansion_sig(n: int, bound: tuple[int, int], keys: np.ndarray, lemma: Lemma, model: Model) -> bytes:
+def _expansion_sig(
+    n: int, bound: tuple[int, int], keys: np.ndarray, lemma: Lemma, stopped: bool, model: Model
+) -> bytes:
     """What ``lemma``'s verdict reads of the expansion of ``keys``, as bytes (the scalar engine: the
-    executable model itself, so every reading it depends on is read through the model's options)."""
+    executable model itself, so every reading it depends on is read through the model's options);
+    ``stopped``: also which transitions the checker does not follow (they violate something)."""
     system = system_for(model)
     got = expand_keys(system, system.engine("scalar"), system.codec(n, bound), keys)
     parts = [got.enabled, got.src, got.action, got.key, got.fits, got.exact, (got.flags & lemma.flag) != 0]
+    if stopped:
+        parts.append(got.flags != 0)
     if lemma not in SAFETY:
         parts.append(got.goal)
     return b"|".join(np.ascontiguousarray(p).tobytes() for p in parts)
@@ -105,16 +127,17 @@ class Equivalence:
 def same_exploration(
     space: Space, among: np.ndarray, reference: Model, explored: list[Explored], lemma: Lemma
 ) -> Equivalence:
-    """Of ``among`` (a mask over ``space``), the combinations whose continued graph at the same bounds
-    ``lemma`` sees as the reference model's, robot count by robot count (see the module docstring);
-    ``explored``: the reference's continued explorations."""
+    """Of ``among`` (a mask over ``space``), the combinations whose continued (or stopped) graph at the
+    same bounds ``lemma`` sees as the reference model's, robot count by robot count (see the module
+    docstring); ``explored``: the reference's explorations, all continued or all stopped."""
     same = among.copy()
     replays = 0
     for ex in explored:
         signatures: list[Callable[[Model], bytes]] = [partial(_initial_sig, ex.n, ex.bound, ex.window)]
         keys = np.sort(ex.expanded)
         signatures += [
-            partial(_expansion_sig, ex.n, ex.bound, keys[i : i + BATCH], lemma) for i in range(0, len(keys), BATCH)
+            partial(_expansion_sig, ex.n, ex.bound, keys[i : i + BATCH], lemma, ex.stopped)
+            for i in range(0, len(keys), BATCH)
         ]
         for signature in signatures:
             if not same.any():

@@ -89,7 +89,9 @@ def write_pages(sweep: Sweep, command: str) -> list[Path]:
     robots = str(lo) if lo == hi else f"{lo} to {hi}"
     intro = (
         f"{sweep.space.base.describe()}. Varied: {', '.join(sweep.space.names)}; each combination checked at "
-        f"{robots} robots in a {b.window[0]}x{b.window[1]} window; {len(sweep.checks)} checks, "
+        f"{robots} robots in a {b.window[0]}x{b.window[1]} window"
+        + (f", explored within {b.bound[0]}x{b.bound[1]}" if b.bound else "")
+        + f"; {len(sweep.checks)} checks, "
         f"{sweep.replays:,} replays."
     )
     h = [f"<h1>Sweep of <code>{html.escape(sweep.space.base.name)}</code></h1>", f"<p>{html.escape(intro)}</p>",

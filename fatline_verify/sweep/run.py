@@ -28,6 +28,8 @@ from ..outputs import Kind, read_json, write_json
 from ..properties import CHECKED, Lemma, LemmaResult, Verdict
 from .cover import cover, refutes
 from .equivalent import Explored, held_past_violations, same_exploration
+from .invariant import TRAPPED, trapped
+from .memo import Memo
 from .space import Space, bearing
 
 OPEN, REFUTED, HOLDS, INCONCLUSIVE = 0, 1, 2, 3
@@ -47,9 +49,16 @@ class SweepBounds:
     window: tuple[int, int]
     engine: str | None = None
     max_states: int | None = None
+    bound: tuple[int, int] | None = None
+    """The exploration bound (``None``: the window)."""
 
     def as_json(self) -> dict[str, Any]:
-        return {"robots": list(self.robots), "window": list(self.window), "max_states": self.max_states}
+        """The bounds as saved (and fingerprinted: a sweep without ``bound`` keeps the fingerprint it had
+        before the option existed, so it still resumes)."""
+        out: dict[str, Any] = {"robots": list(self.robots), "window": list(self.window), "max_states": self.max_states}
+        if self.bound is not None and self.bound != self.window:
+            out["bound"] = list(self.bound)
+        return out
 
 
 @dataclass(frozen=True, slots=True)
@@ -65,31 +74,39 @@ class Found:
     """The robot counts explored past violations (only when some lemma holds)."""
     held: frozenset[Lemma] = frozenset()
     """The lemmas that hold there too."""
+    stopped: tuple[Explored, ...] = ()
+    """The robot counts as the check explored them, stopping at violations (only when some lemma holds)."""
 
 
 def check_combo(model: Model, bounds: SweepBounds, combo: dict[str, int]) -> Found:
     """The bounded check of ``model`` (one combination's readings): worst verdict per lemma over the
     robot counts, the witness of the smallest violating count (replayed by the checker); then, if a
-    lemma holds, the same counts explored past violations (:mod:`fatline_verify.sweep.equivalent`)."""
+    lemma holds, what those counts expanded, and the same counts explored past violations
+    (:mod:`fatline_verify.sweep.equivalent`)."""
     from ..checker import CheckPlan, explore_robots, lemma_verdicts
 
     t0 = time.perf_counter()
-    plan = CheckPlan.of(model, bounds.robots, bounds.window, max_states=bounds.max_states, engine=bounds.engine)
-    verdicts = _worst(lemma_verdicts(explore_robots(plan, n)) for n in plan.counts)
+    plan = CheckPlan.of(
+        model, bounds.robots, bounds.window, max_states=bounds.max_states, engine=bounds.engine, bound=bounds.bound
+    )
+    stops = [explore_robots(plan, n) for n in plan.counts]
+    verdicts = _worst(lemma_verdicts(ex) for ex in stops)
     witnesses: dict[Lemma, dict[str, Any]] = {}
     explored: list[Explored] = []
+    stopped: tuple[Explored, ...] = ()
     held: frozenset[Lemma] = frozenset()
     if any(v is Verdict.HOLDS_WITHIN_BOUNDS for v, _ in verdicts.values()):
+        stopped = tuple(Explored.of(ex, stopped=True) for ex in stops)
         go_on = replace(plan, after_violation="continue")
         held = frozenset(CHECKED)
         for n in plan.counts:
             ex = explore_robots(go_on, n)
-            explored.append(Explored(n, ex.window, ex.start_window, ex.keys[ex.expanded]))
+            explored.append(Explored.of(ex, stopped=False))
             held &= held_past_violations(ex)
     witnesses = {lemma: doc for lemma, (v, doc) in verdicts.items() if v is Verdict.VIOLATED and doc is not None}
     return Found(
         combo, {lemma: v for lemma, (v, _) in verdicts.items()}, witnesses, time.perf_counter() - t0,
-        tuple(explored), held,
+        tuple(explored), held, stopped,
     )  # fmt: skip
 
 
@@ -128,10 +145,12 @@ class Sweep:
     checks: list[dict[str, Any]] = field(default_factory=list)
     replays: int = 0
     _projections: dict[Lemma, np.ndarray] = field(default_factory=dict, init=False, repr=False)
+    _memo: Memo = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
         self.spaces = {lemma: Space(self.space.base, bearing(lemma, self.space.names)) for lemma in self.lemmas}
         self.status = {lemma: np.zeros(s.size, dtype=np.uint8) for lemma, s in self.spaces.items()}
+        self._memo = Memo(self.space)
 
     # --- files -----------------------------------------------------------------------------------
     @property
@@ -262,20 +281,32 @@ class Sweep:
         return f"{lemma.value}: a counterexample of {len(doc['initial'])} robots refutes {newly:,}"
 
     def _equivalent(self, found: Found, kept: dict[Lemma, int]) -> list[str]:
-        """Close each lemma of ``kept`` at this combination with its verdict; a lemma that holds even
-        past violations also at every open combination whose continued graph it sees alike."""
+        """Close each lemma of ``kept`` at this combination with its verdict; a lemma that holds also
+        at every open combination whose stopped graph it sees alike (a liveness lemma: that this
+        combination's states trap, :mod:`fatline_verify.sweep.invariant`), and, if it holds even past
+        violations, whose continued graph it sees alike (:mod:`fatline_verify.sweep.equivalent`)."""
         lines = []
         for lemma, code in kept.items():
             space, status = self.spaces[lemma], self.status[lemma]
             status[space.index(found.combo)] = code
-            if code != HOLDS or lemma not in found.held:
+            if code != HOLDS:
                 continue
-            among = (status == OPEN)[self._projection(lemma)]
-            eq = same_exploration(self.space, among, self.space.model(found.combo), list(found.explored), lemma)
-            self.replays += eq.replays
-            targets = np.unique(self._projection(lemma)[eq.same])
-            status[targets] = HOLDS
-            lines.append(f"{lemma.value}: holds within bounds under {len(targets) + 1:,} readings (one graph)")
+            # A liveness lemma closes by an invariant, which covers every stopped graph equal to this one.
+            stopped = partial(trapped, memo=self._memo) if lemma in TRAPPED else same_exploration
+            closures = [(stopped, found.stopped)] + (
+                [(same_exploration, found.explored)] if lemma in found.held else []
+            )
+            closed = 1
+            for closure, explored in closures:
+                if not explored:
+                    continue
+                among = (status == OPEN)[self._projection(lemma)]
+                eq = closure(self.space, among, self.space.model(found.combo), list(explored), lemma)
+                self.replays += eq.replays
+                targets = np.unique(self._projection(lemma)[eq.same])
+                status[targets] = HOLDS
+                closed += len(targets)
+            lines.append(f"{lemma.value}: holds within bounds under {closed:,} readings (one graph)")
         return lines
 
     def _projection(self, lemma: Lemma) -> np.ndarray:
@@ -365,7 +396,7 @@ def sweep_lines(sweep: Sweep) -> list[str]:
     lines = [
         f"sweep of {sweep.space.base.describe()}",
         f"varied: {', '.join(sweep.space.names)}; each combination checked at robots {robots}, "
-        f"window {b.window[0]}x{b.window[1]}",
+        f"window {b.window[0]}x{b.window[1]}" + (f", bound {b.bound[0]}x{b.bound[1]}" if b.bound else ""),
         "",
     ]
     rows = [("lemma", "readings", "refuted", "holds", "inconclusive", "open", "counterexamples")]

@@ -1,0 +1,130 @@
+"""The sweep's liveness closure: readings a checked reading's states trap hold as the checker says,
+and the memo of expansions answers as the executable model does under each reading alone."""
+
+from __future__ import annotations
+
+from functools import partial
+
+import numpy as np
+import pytest
+
+from fatline_verify.config import load_model
+from fatline_verify.properties import Lemma, Verdict
+from fatline_verify.sweep.invariant import TRAPPED, Trap, _initial, _kept, _step, trapped, traps
+from fatline_verify.sweep.memo import Memo
+from fatline_verify.sweep.run import SweepBounds, check_combo
+from fatline_verify.sweep.space import Space
+
+VARY = ("visibility", "vacant", "contact", "goal")
+BOUNDS = SweepBounds((2, 3), (7, 7), bound=(11, 11))
+
+
+@pytest.fixture(scope="module")
+def checked():
+    """Every combination of a small space checked on its own (the ground truth)."""
+    space = Space(load_model("paper"), VARY)
+    found = [check_combo(space.model(space.combo(i)), BOUNDS, space.combo(i)) for i in range(space.size)]
+    return space, found
+
+
+@pytest.mark.parametrize("lemma", TRAPPED)
+def test_every_trapped_reading_holds_as_its_own_check_says(checked, lemma):
+    """Soundness, exhaustively: from every reading where the lemma holds, the readings its states trap
+    are ones where the checker, run on them alone, says HOLDS_WITHIN_BOUNDS; and the closure is not
+    vacuous (it closes some reading besides its own)."""
+    space, found = checked
+    holds = np.array([f.verdicts[lemma] is Verdict.HOLDS_WITHIN_BOUNDS for f in found])
+    assert holds.any() and not holds.all()
+    memo = Memo(space)
+    closed_elsewhere = 0
+    for i in np.flatnonzero(holds):
+        among = np.ones(space.size, dtype=bool)
+        got = trapped(space, among, space.model(space.combo(int(i))), list(found[i].stopped), lemma, memo)
+        assert not (got.same & ~holds).any(), [
+            space.text(space.combo(int(j))) for j in np.flatnonzero(got.same & ~holds)
+        ]
+        assert got.same[i], "a reading is trapped by its own states"
+        closed_elsewhere += int(got.same.sum()) - 1
+    assert closed_elsewhere > 0
+
+
+def test_a_reading_where_the_lemma_fails_is_never_trapped_by_its_own_states(checked):
+    """Where progress fails, the reading's own states hold a deadlock: no invariant closes it."""
+    space, found = checked
+    i = next(k for k, f in enumerate(found) if f.verdicts[Lemma.PROGRESS] is Verdict.VIOLATED and f.stopped)
+    got = trapped(
+        space, np.ones(space.size, dtype=bool), space.model(space.combo(i)), list(found[i].stopped), Lemma.PROGRESS
+    )
+    assert not got.same[i]
+
+
+def _largest_trap(checked, lemma: Lemma):
+    """The first reading where ``lemma`` holds: its largest robot count's trap, and each state's step."""
+    space, found = checked
+    i = next(k for k, f in enumerate(found) if f.verdicts[lemma] is Verdict.HOLDS_WITHIN_BOUNDS)
+    model = space.model(space.combo(i))
+    ranked = traps(model, list(found[i].stopped), lemma)
+    assert ranked is not None
+    trap = ranked[-1]
+    return trap, [_step(trap, trap.states[k : k + 1], model) for k in range(len(trap.states))]
+
+
+def test_termination_is_closed_only_along_a_rank(checked):
+    """A reference where termination holds gets a rank on every robot count; with the rank reversed,
+    some non-goal transition goes down and its state no longer keeps the reading inside the trap.
+    A reference whose non-goal graph cycles (termination fails by a fair cycle) gets no rank."""
+    space, found = checked
+    trap, steps = _largest_trap(checked, Lemma.TERMINATION)
+    assert trap.rank is not None and trap.goal is not None
+    assert all(_kept(trap, k, step) for k, step in enumerate(steps))
+    broken = Trap(trap.n, trap.bound, trap.window, trap.states, trap.goal, -trap.rank)
+    moving = [k for k, step in enumerate(steps) if not step.goal and len(step.followed)]
+    assert moving and not all(_kept(broken, k, steps[k]) for k in moving)
+    cycles = [f for f in found if f.verdicts[Lemma.PROGRESS] is Verdict.HOLDS_WITHIN_BOUNDS
+              and f.verdicts[Lemma.TERMINATION] is Verdict.VIOLATED]  # fmt: skip
+    for f in cycles:
+        assert traps(space.model(f.combo), list(f.stopped), Lemma.TERMINATION) is None
+
+
+def test_the_memo_answers_as_the_model_does_under_each_reading_alone():
+    """Each combination's answer from the memo's decision tree equals the expansion computed under
+    that combination's own model (no recorder), and a second question over the same states costs
+    no replay."""
+    space = Space(load_model("paper"), ("bands", "vacant", "path", "contact", "timing"))
+    base = space.model(space.combo(0))
+    from fatline_verify.checker import CheckPlan, explore_robots
+
+    ex = explore_robots(CheckPlan.of(base, (3, 3), (7, 7)), 3)
+    states = np.sort(ex.keys[ex.expanded])[::7][:12]
+    trap = Trap(3, (7, 7), (7, 7), states)
+    memo = Memo(space)
+    everything = np.arange(space.size)
+    for k in range(len(states)):
+        compute = partial(_step, trap, states[k : k + 1])
+        seen = np.zeros(space.size, dtype=bool)
+        for inside, step in memo.answers(("step", k), compute, everything):
+            assert not seen[inside].any()
+            seen[inside] = True
+            for j in inside[:: max(1, len(inside) // 3)]:
+                alone = compute(space.model(space.combo(int(j))))
+                assert (alone.enabled, alone.goal, alone.fits) == (step.enabled, step.goal, step.fits)
+                assert np.array_equal(alone.followed, step.followed)
+        assert seen.all()
+    before = memo.replays
+    assert before < space.size * len(states)  # fewer replays than combinations: the tree shares them
+    for k in range(len(states)):
+        list(memo.answers(("step", k), partial(_step, trap, states[k : k + 1]), everything))
+    assert memo.replays == before
+    initial = list(memo.answers(("initial",), partial(_initial, trap), everything))
+    assert sum(len(inside) for inside, _ in initial) == space.size
+
+
+def test_a_state_whose_move_leaves_the_trap_does_not_keep_a_reading_inside(checked):
+    """With one reachable state taken out of the trap, the state that moves into it keeps no reading
+    inside (its followed transition leaves the invariant), while the full trap keeps it."""
+    trap, steps = _largest_trap(checked, Lemma.PROGRESS)
+    k, step = next((k, s) for k, s in enumerate(steps) if len(s.followed) and s.followed[0] != trap.states[k])
+    assert _kept(trap, k, step)
+    fewer = Trap(trap.n, trap.bound, trap.window, trap.states[trap.states != step.followed[0]])
+    j = int(np.searchsorted(fewer.states, trap.states[k]))
+    assert not _kept(fewer, j, step)
