@@ -5,12 +5,13 @@ from __future__ import annotations
 
 from functools import partial
 
+import networkx as nx
 import numpy as np
 import pytest
 
 from fatline_verify.config import load_model
 from fatline_verify.properties import Lemma, Verdict
-from fatline_verify.sweep.invariant import TRAPPED, Trap, _initial, _kept, _step, trapped, traps
+from fatline_verify.sweep.invariant import TRAPPED, Ranks, Trap, _initial, _kept, _step, trapped, traps, within_known
 from fatline_verify.sweep.memo import Memo
 from fatline_verify.sweep.run import SweepBounds, check_combo
 from fatline_verify.sweep.space import Space
@@ -128,3 +129,73 @@ def test_a_state_whose_move_leaves_the_trap_does_not_keep_a_reading_inside(check
     fewer = Trap(trap.n, trap.bound, trap.window, trap.states[trap.states != step.followed[0]])
     j = int(np.searchsorted(fewer.states, trap.states[k]))
     assert not _kept(fewer, j, step)
+
+
+def test_the_states_of_several_checks_close_every_reading_each_trap_does_and_only_where_progress_holds(checked):
+    """``within_known`` over the union of the states every holding reading expanded: every reading it
+    closes holds progress on its own check, and it closes at least what each single trap closes."""
+    space, found = checked
+    holds = np.array([f.verdicts[Lemma.PROGRESS] is Verdict.HOLDS_WITHIN_BOUNDS for f in found])
+    union: dict[tuple, np.ndarray] = {}
+    memo = Memo(space)
+    singles = np.zeros(space.size, dtype=bool)
+    for i in np.flatnonzero(holds)[:3]:
+        for ex in found[i].stopped:
+            where = (ex.n, ex.bound, ex.window)
+            union[where] = np.union1d(union.get(where, ex.expanded), ex.expanded)
+        everything = np.ones(space.size, dtype=bool)
+        singles |= trapped(
+            space, everything, space.model(space.combo(int(i))), list(found[i].stopped), Lemma.PROGRESS, memo
+        ).same
+    known = [Trap(n, bound, window, keys) for (n, bound, window), keys in sorted(union.items())]
+    got = within_known(space, np.ones(space.size, dtype=bool), known, memo)
+    assert not (got.same & ~holds).any()
+    assert (got.same | ~singles).all() and got.same.sum() >= singles.sum() > 0
+    assert not within_known(space, ~holds, known, memo).same.any()  # nothing where progress fails
+
+
+def test_ranked_states_of_several_checks_close_termination_only_where_it_holds(checked):
+    """``within_known`` with the ranks of the readings where termination holds: every reading it
+    closes holds termination on its own check (the bound lets nothing escape there), and it closes
+    some; a reading where termination fails is never closed."""
+    space, found = checked
+    holds = np.array([f.verdicts[Lemma.TERMINATION] is Verdict.HOLDS_WITHIN_BOUNDS for f in found])
+    ranks = Ranks()
+    union: dict[tuple, np.ndarray] = {}
+    for i in np.flatnonzero(holds)[:3]:
+        ranks.add(space.model(space.combo(int(i))), list(found[i].stopped))
+        for ex in found[i].stopped:
+            where = (ex.n, ex.bound, ex.window)
+            union[where] = np.union1d(union.get(where, ex.expanded), ex.expanded)
+    known = [Trap(n, bound, window, keys) for (n, bound, window), keys in sorted(union.items())]
+    memo = Memo(space)
+    got = within_known(space, np.ones(space.size, dtype=bool), known, memo, ranks)
+    assert not (got.same & ~holds).any()
+    assert got.same.sum() >= 3
+    assert not within_known(space, ~holds, known, memo, ranks).same.any()
+    flat = Ranks()  # no transitions recorded: every non-goal state is unranked, nothing moving is closed
+    for where in union:
+        flat.graphs[where] = nx.DiGraph()
+    moving = within_known(space, np.ones(space.size, dtype=bool), known, memo, flat)
+    assert moving.same.sum() < got.same.sum()
+
+
+def test_a_transition_out_of_a_non_goal_state_must_go_up_in_rank():
+    """``_up``: a non-goal state's followed transitions go to higher ranks; an unranked target, a
+    lower one or an escaping transition refuses; a goal state only needs nothing to escape."""
+    from fatline_verify.sweep.invariant import Step, _up
+
+    keys = np.array([3, 5, 7], dtype=np.uint64)
+    rank = {k.tobytes(): place for place, k in enumerate(keys)}
+
+    def step(*targets: int, goal: bool = False, fits: bool = True) -> Step:
+        return Step(True, goal, np.array(targets, dtype=np.uint64), fits)
+
+    here = keys[1].tobytes()
+    assert _up(rank, here, step(7))
+    assert not _up(rank, here, step(3))
+    assert not _up(rank, here, step(5))  # a self-loop is a cycle
+    assert not _up(rank, here, step(7, 11))  # 11 has no rank
+    assert not _up(rank, here, step(7, fits=False))
+    assert _up(rank, here, step(3, goal=True))
+    assert not _up(rank, np.uint64(11).tobytes(), step(7))

@@ -23,7 +23,7 @@ in a state's decision is still closed if its own decision stays in E.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import partial
 
 import networkx as nx
@@ -161,3 +161,137 @@ def trapped(
                 if not _kept(trap, k, step):
                     same[inside] = False
     return Equivalence(same, memo.replays - before)
+
+
+def within_known(
+    space: Space, among: np.ndarray, known: list[Trap], memo: Memo, ranks: Ranks | None = None
+) -> Equivalence:
+    """Of ``among`` (a mask over ``space``), the combinations under which ``progress`` holds because
+    every state their own search reaches is one of ``known`` (the states earlier checks expanded, per
+    robot count), none of them a deadlock there.
+
+    A search over all of these combinations at once: each known state carries the combinations that
+    reach it; its expansion is asked of ``memo`` for those that are new, and each answer's followed
+    successors pass them on. A combination that reaches a state outside ``known`` is dropped (not
+    judged), one that reaches a deadlock too (the check that judges it gives the counterexample). What
+    is left has followed, from its own initial states, exactly its own transitions into known states
+    only, and met no deadlock: the checker's verdict there is HOLDS_WITHIN_BOUNDS. (A single trap is
+    the case of one reference; this closes every combination any mixture of them covers.)
+
+    With ``ranks`` (a rank per known state: a topological order of the transitions out of non-goal
+    states that the checked readings took), the combinations left also hold ``termination``: a
+    combination is dropped as well where a transition leaves the bound (nothing may escape) or where
+    a followed transition out of a state that is not a goal there fails to go up in rank. Every
+    transition between non-goal states then goes up, so there is no cycle among them, fair or not."""
+    before = memo.replays
+    alive = among.copy()
+    for trap in known:
+        where = (trap.n, trap.bound)
+        rank = None if ranks is None else ranks.rank(trap.n, trap.bound, trap.window)
+        spread = _Spread({key.tobytes() for key in trap.states}, np.flatnonzero(alive), alive)
+        initial = memo.answers(("initial", *where, trap.window), partial(_initial, trap), spread.ids)
+        for inside, keys in list(initial):
+            for key in keys:
+                spread.add(key.tobytes(), spread.positions(inside))
+        dtype = trap.states.dtype
+        while spread.pending:
+            key, delta = spread.pop()
+            if not len(delta):
+                continue
+            compute = partial(_step, trap, np.frombuffer(key, dtype=dtype).copy())
+            for inside, step in list(memo.answers(("step", *where, key), compute, delta)):
+                if not step.goal and not step.enabled:
+                    alive[inside] = False  # a deadlock
+                    continue
+                if rank is not None and not _up(rank, key, step):
+                    alive[inside] = False  # something escapes, or a transition does not go up
+                    continue
+                positions = spread.positions(inside)
+                for successor in step.followed:
+                    spread.add(successor.tobytes(), positions)
+    return Equivalence(alive, memo.replays - before)
+
+
+def _up(rank: dict[bytes, int], key: bytes, step: Step) -> bool:
+    """Nothing escapes from the state ``key``, and, if it is not a goal, each followed transition
+    goes to a state of higher rank (an unranked state counts as lower)."""
+    if not step.fits:
+        return False
+    if step.goal:
+        return True
+    here = rank.get(key)
+    return here is not None and all(rank.get(t.tobytes(), -1) > here for t in step.followed)
+
+
+@dataclass
+class Ranks:
+    """Per robot count and bounds, a directed acyclic graph over states: the transitions out of
+    non-goal states that checked readings took (a reading whose transitions would close a cycle adds
+    none), and its topological order as ranks."""
+
+    graphs: dict[tuple[int, tuple[int, int], tuple[int, int]], nx.DiGraph] = field(default_factory=dict)
+    _ranks: dict[tuple[int, tuple[int, int], tuple[int, int]], dict[bytes, int]] = field(default_factory=dict)
+
+    def add(self, reference: Model, explored: list[Explored]) -> None:
+        """The transitions of ``reference``'s stopped explorations out of its non-goal states."""
+        for ex in explored:
+            trap = Trap(ex.n, ex.bound, ex.window, np.sort(ex.expanded))
+            got = _expand(trap, trap.states, reference)
+            follow = got.fits & (got.flags == 0)
+            src = got.src[follow]
+            keep = ~got.goal[src]
+            edges = [
+                (trap.states[a].tobytes(), b.tobytes()) for a, b in zip(src[keep], got.key[follow][keep], strict=True)
+            ]
+            where = (ex.n, ex.bound, ex.window)
+            graph = self.graphs.setdefault(where, nx.DiGraph())
+            before = set(graph.edges)
+            graph.add_nodes_from(key.tobytes() for key in trap.states)
+            graph.add_edges_from(edges)
+            if not nx.is_directed_acyclic_graph(graph):
+                graph.remove_edges_from([e for e in edges if e not in before])
+            self._ranks.pop(where, None)
+
+    def rank(self, n: int, bound: tuple[int, int], window: tuple[int, int]) -> dict[bytes, int]:
+        where = (n, bound, window)
+        if where not in self._ranks:
+            graph = self.graphs.get(where, nx.DiGraph())
+            self._ranks[where] = {state: place for place, state in enumerate(nx.topological_sort(graph))}
+        return self._ranks[where]
+
+
+@dataclass
+class _Spread:
+    """Which of the combinations ``ids`` (sorted numbers; positions in it stand for them) reach each
+    known state (keys as bytes), and those not yet passed on."""
+
+    states: set[bytes]
+    ids: np.ndarray
+    alive: np.ndarray
+    """A mask over every combination, shared with the caller: the ones still judged."""
+    reach: dict[bytes, np.ndarray] = field(default_factory=dict)
+    pending: dict[bytes, list[np.ndarray]] = field(default_factory=dict)
+
+    def positions(self, combos: np.ndarray) -> np.ndarray:
+        return np.searchsorted(self.ids, combos)
+
+    def add(self, key: bytes, positions: np.ndarray) -> None:
+        positions = positions[self.alive[self.ids[positions]]]
+        if not len(positions):
+            return
+        if key not in self.states:
+            self.alive[self.ids[positions]] = False  # it leaves what is known: not judged here
+            return
+        mask = self.reach.get(key)
+        if mask is None:
+            mask = self.reach[key] = np.zeros(len(self.ids), dtype=bool)
+        new = positions[~mask[positions]]
+        if len(new):
+            mask[new] = True
+            self.pending.setdefault(key, []).append(new)
+
+    def pop(self) -> tuple[bytes, np.ndarray]:
+        """A state with combinations not yet passed on, and those still judged (numbers, sorted)."""
+        key, parts = self.pending.popitem()
+        combos = self.ids[np.sort(np.concatenate(parts))]
+        return key, combos[self.alive[combos]]

@@ -27,8 +27,8 @@ from ..errors import InvalidInput
 from ..outputs import Kind, read_json, write_json
 from ..properties import CHECKED, Lemma, LemmaResult, Verdict
 from .cover import cover, refutes
-from .equivalent import Explored, held_past_violations, same_exploration
-from .invariant import TRAPPED, trapped
+from .equivalent import Equivalence, Explored, held_past_violations, same_exploration
+from .invariant import TRAPPED, Ranks, Trap, trapped, within_known
 from .memo import Memo
 from .space import Space, bearing
 
@@ -146,6 +146,9 @@ class Sweep:
     replays: int = 0
     _projections: dict[Lemma, np.ndarray] = field(default_factory=dict, init=False, repr=False)
     _memo: Memo = field(init=False, repr=False)
+    _ranks: Ranks = field(default_factory=Ranks, repr=False)
+    _known: dict[tuple[int, tuple[int, int], tuple[int, int]], np.ndarray] = field(default_factory=dict, repr=False)
+    """Per robot count and bounds, every state the checks of this run expanded (for :meth:`_within_known`)."""
 
     def __post_init__(self) -> None:
         self.spaces = {lemma: Space(self.space.base, bearing(lemma, self.space.names)) for lemma in self.lemmas}
@@ -292,7 +295,7 @@ class Sweep:
             if code != HOLDS:
                 continue
             # A liveness lemma closes by an invariant, which covers every stopped graph equal to this one.
-            stopped = partial(trapped, memo=self._memo) if lemma in TRAPPED else same_exploration
+            stopped = self._within_known if lemma in TRAPPED else same_exploration
             closures = [(stopped, found.stopped)] + (
                 [(same_exploration, found.explored)] if lemma in found.held else []
             )
@@ -308,6 +311,25 @@ class Sweep:
                 closed += len(targets)
             lines.append(f"{lemma.value}: holds within bounds under {closed:,} readings (one graph)")
         return lines
+
+    def _within_known(
+        self, space: Space, among: np.ndarray, reference: Model, explored: list[Explored], lemma: Lemma
+    ) -> Equivalence:
+        """A liveness lemma's closure: the combinations whose searches stay in the states every check so
+        far expanded (this one's included), meeting no deadlock, and for ``termination`` going up in
+        rank with nothing escaping (:func:`within_known`); for ``termination`` also the combinations
+        this one's states trap (:func:`trapped`: its own rank, where the shared one has no room)."""
+        for ex in explored:
+            where = (ex.n, ex.bound, ex.window)
+            old = self._known.get(where)
+            self._known[where] = np.union1d(ex.expanded if old is None else old, ex.expanded)
+        known = [Trap(n, bound, window, keys) for (n, bound, window), keys in sorted(self._known.items())]
+        if lemma is not Lemma.TERMINATION:
+            return within_known(space, among, known, self._memo)
+        self._ranks.add(reference, explored)
+        shared = within_known(space, among, known, self._memo, self._ranks)
+        own = trapped(space, among & ~shared.same, reference, explored, lemma, self._memo)
+        return Equivalence(shared.same | own.same, shared.replays + own.replays)
 
     def _projection(self, lemma: Lemma) -> np.ndarray:
         """Each combination of the whole space as a combination of ``lemma``'s space."""
