@@ -199,3 +199,16 @@ def test_a_transition_out_of_a_non_goal_state_must_go_up_in_rank():
     assert not _up(rank, here, step(7, fits=False))
     assert _up(rank, here, step(3, goal=True))
     assert not _up(rank, np.uint64(11).tobytes(), step(7))
+
+
+def test_grown_from_one_reading_the_spread_is_every_readings_own_search(checked):
+    """With room to take in new states, the spread from one reading's states is the search of every
+    reading at once: it closes exactly the readings where progress holds, no more and no fewer."""
+    space, found = checked
+    holds = np.array([f.verdicts[Lemma.PROGRESS] is Verdict.HOLDS_WITHIN_BOUNDS for f in found])
+    i = int(np.flatnonzero(holds)[0])
+    known = [Trap(ex.n, ex.bound, ex.window, np.unique(ex.expanded)) for ex in found[i].stopped]
+    got = within_known(space, np.ones(space.size, dtype=bool), known, Memo(space), grow=100_000)
+    assert np.array_equal(got.same, holds), [space.text(space.combo(int(j))) for j in np.flatnonzero(got.same != holds)]
+    tight = within_known(space, np.ones(space.size, dtype=bool), known, Memo(space), grow=1)
+    assert tight.same.sum() < holds.sum()  # with no room, what leaves the states is not judged

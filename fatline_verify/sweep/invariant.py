@@ -164,7 +164,12 @@ def trapped(
 
 
 def within_known(
-    space: Space, among: np.ndarray, known: list[Trap], memo: Memo, ranks: Ranks | None = None
+    space: Space,
+    among: np.ndarray,
+    known: list[Trap],
+    memo: Memo,
+    ranks: Ranks | None = None,
+    grow: int = 0,
 ) -> Equivalence:
     """Of ``among`` (a mask over ``space``), the combinations under which ``progress`` holds because
     every state their own search reaches is one of ``known`` (the states earlier checks expanded, per
@@ -182,13 +187,19 @@ def within_known(
     states that the checked readings took), the combinations left also hold ``termination``: a
     combination is dropped as well where a transition leaves the bound (nothing may escape) or where
     a followed transition out of a state that is not a goal there fails to go up in rank. Every
-    transition between non-goal states then goes up, so there is no cycle among them, fair or not."""
+    transition between non-goal states then goes up, so there is no cycle among them, fair or not.
+
+    ``grow`` > 0 (``progress`` only): a state outside ``known`` is taken in rather than dropping the
+    combinations that reach it, up to ``grow`` new states per robot count. The spread is then every
+    open combination's own search at once, and what is left is exactly where no deadlock is reached."""
     before = memo.replays
     alive = among.copy()
     for trap in known:
         where = (trap.n, trap.bound)
         rank = None if ranks is None else ranks.rank(trap.n, trap.bound, trap.window)
-        spread = _Spread({key.tobytes() for key in trap.states}, np.flatnonzero(alive), alive)
+        spread = _Spread(
+            {key.tobytes() for key in trap.states}, np.flatnonzero(alive), alive, 0 if rank is not None else grow
+        )
         initial = memo.answers(("initial", *where, trap.window), partial(_initial, trap), spread.ids)
         for inside, keys in list(initial):
             for key in keys:
@@ -269,6 +280,8 @@ class _Spread:
     ids: np.ndarray
     alive: np.ndarray
     """A mask over every combination, shared with the caller: the ones still judged."""
+    grow: int = 0
+    """How many more unknown states may be taken in."""
     reach: dict[bytes, np.ndarray] = field(default_factory=dict)
     pending: dict[bytes, list[np.ndarray]] = field(default_factory=dict)
 
@@ -280,8 +293,11 @@ class _Spread:
         if not len(positions):
             return
         if key not in self.states:
-            self.alive[self.ids[positions]] = False  # it leaves what is known: not judged here
-            return
+            if self.grow <= 0:
+                self.alive[self.ids[positions]] = False  # it leaves what is known: not judged here
+                return
+            self.states.add(key)
+            self.grow -= 1
         mask = self.reach.get(key)
         if mask is None:
             mask = self.reach[key] = np.zeros(len(self.ids), dtype=bool)

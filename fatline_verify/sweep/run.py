@@ -37,6 +37,11 @@ OPEN, REFUTED, HOLDS, INCONCLUSIVE = 0, 1, 2, 3
 
 STATUS = {REFUTED: Verdict.VIOLATED, HOLDS: Verdict.HOLDS_WITHIN_BOUNDS, INCONCLUSIVE: Verdict.INCONCLUSIVE}
 
+GROW = 200_000
+"""States a ``progress`` closure may take in beyond those the checks expanded, per robot count: the
+open readings' searches run together (:func:`within_known`) until they are done or this many new
+states were met."""
+
 FORMAT = Kind.SWEEP.value
 VERSION = 1
 
@@ -325,7 +330,7 @@ class Sweep:
             self._known[where] = np.union1d(ex.expanded if old is None else old, ex.expanded)
         known = [Trap(n, bound, window, keys) for (n, bound, window), keys in sorted(self._known.items())]
         if lemma is not Lemma.TERMINATION:
-            return within_known(space, among, known, self._memo)
+            return within_known(space, among, known, self._memo, grow=GROW)
         self._ranks.add(reference, explored)
         shared = within_known(space, among, known, self._memo, self._ranks)
         own = trapped(space, among & ~shared.same, reference, explored, lemma, self._memo)
