@@ -11,7 +11,18 @@ import pytest
 
 from fatline_verify.config import load_model
 from fatline_verify.properties import Lemma, Verdict
-from fatline_verify.sweep.invariant import TRAPPED, Ranks, Trap, _initial, _kept, _step, trapped, traps, within_known
+from fatline_verify.sweep.invariant import (
+    TRAPPED,
+    Ranks,
+    Trap,
+    _initial,
+    _kept,
+    _step,
+    spread_termination,
+    trapped,
+    traps,
+    within_known,
+)
 from fatline_verify.sweep.memo import Memo
 from fatline_verify.sweep.run import SweepBounds, check_combo
 from fatline_verify.sweep.space import Space
@@ -212,3 +223,35 @@ def test_grown_from_one_reading_the_spread_is_every_readings_own_search(checked)
     assert np.array_equal(got.same, holds), [space.text(space.combo(int(j))) for j in np.flatnonzero(got.same != holds)]
     tight = within_known(space, np.ones(space.size, dtype=bool), known, Memo(space), grow=1)
     assert tight.same.sum() < holds.sum()  # with no room, what leaves the states is not judged
+
+
+def test_termination_spread_from_one_reading_closes_only_where_termination_holds(checked):
+    """Grown from one reading's states, the readings whose transitions never lie on a cycle of the
+    union of all their searches hold termination on their own checks; here that is every reading
+    where termination holds (none of them has a cycle that is not fair)."""
+    space, found = checked
+    holds = np.array([f.verdicts[Lemma.TERMINATION] is Verdict.HOLDS_WITHIN_BOUNDS for f in found])
+    i = int(np.flatnonzero(holds)[0])
+    known = [Trap(ex.n, ex.bound, ex.window, np.unique(ex.expanded)) for ex in found[i].stopped]
+    got = spread_termination(space, np.ones(space.size, dtype=bool), known, Memo(space), 100_000)
+    assert not (got.same & ~holds).any()
+    assert np.array_equal(got.same, holds)
+
+
+def test_a_transition_inside_a_cycle_of_the_union_never_goes_up():
+    """``Ranks.by_components``: states on one cycle share a rank (so ``_up`` refuses a transition
+    between them, a self-loop included), and a transition out of the cycle goes up."""
+    from fatline_verify.sweep.invariant import Step, _up
+
+    a, b, c = (np.array([v], dtype=np.uint64) for v in (1, 2, 3))
+    where = (3, (11, 11), (7, 7))
+    union = Ranks()
+    union.take(where, a.tobytes(), b)
+    union.take(where, b.tobytes(), np.concatenate([a, c]))
+    union.take(where, c.tobytes(), c)
+    rank = union.by_components().rank(*where)
+    assert rank[a.tobytes()] == rank[b.tobytes()] < rank[c.tobytes()]
+    assert not _up(rank, a.tobytes(), Step(True, False, b, True))
+    assert _up(rank, b.tobytes(), Step(True, False, c, True))
+    assert not _up(rank, c.tobytes(), Step(True, False, c, True))
+    assert list(union.states(*where, np.dtype(np.uint64))) == [1, 2, 3]

@@ -170,6 +170,7 @@ def within_known(
     memo: Memo,
     ranks: Ranks | None = None,
     grow: int = 0,
+    taken: Ranks | None = None,
 ) -> Equivalence:
     """Of ``among`` (a mask over ``space``), the combinations under which ``progress`` holds because
     every state their own search reaches is one of ``known`` (the states earlier checks expanded, per
@@ -191,7 +192,9 @@ def within_known(
 
     ``grow`` > 0 (``progress`` only): a state outside ``known`` is taken in rather than dropping the
     combinations that reach it, up to ``grow`` new states per robot count. The spread is then every
-    open combination's own search at once, and what is left is exactly where no deadlock is reached."""
+    open combination's own search at once, and what is left is exactly where no deadlock is reached.
+    ``taken``: where to record every transition the spread followed out of a non-goal state (so that
+    :func:`spread_termination` can rank them)."""
     before = memo.replays
     alive = among.copy()
     for trap in known:
@@ -220,7 +223,32 @@ def within_known(
                 positions = spread.positions(inside)
                 for successor in step.followed:
                     spread.add(successor.tobytes(), positions)
+                if taken is not None:
+                    taken.take(
+                        (trap.n, trap.bound, trap.window), key, step.followed[:0] if step.goal else step.followed
+                    )
     return Equivalence(alive, memo.replays - before)
+
+
+def spread_termination(space: Space, among: np.ndarray, known: list[Trap], memo: Memo, grow: int) -> Equivalence:
+    """Of ``among``, the combinations under which ``termination`` holds because no transition of their
+    own search lies on a cycle of *any* of their searches.
+
+    First the searches of all of them run together from ``known``, taking in new states (``grow``),
+    and every transition they follow out of a non-goal state is recorded: the union graph U. Its
+    strongly connected components, in topological order, rank every state (a state's rank is its
+    component's place). Then :func:`within_known` with those ranks keeps the combinations whose every
+    followed transition out of a non-goal state goes strictly up, nothing escaping and no deadlock:
+    such a search never takes a transition inside a component of U, so its non-goal graph (a
+    subgraph of U) has no cycle, fair or not, and the checker finds termination holding."""
+    union = Ranks()
+    first = within_known(space, among, known, memo, grow=grow, taken=union)
+    ranked = [
+        Trap(t.n, t.bound, t.window, np.union1d(t.states, union.states(t.n, t.bound, t.window, t.states.dtype)))
+        for t in known
+    ]
+    second = within_known(space, among & first.same, ranked, memo, union.by_components())
+    return Equivalence(second.same, first.replays + second.replays)
 
 
 def _up(rank: dict[bytes, int], key: bytes, step: Step) -> bool:
@@ -262,6 +290,29 @@ class Ranks:
             if not nx.is_directed_acyclic_graph(graph):
                 graph.remove_edges_from([e for e in edges if e not in before])
             self._ranks.pop(where, None)
+
+    def take(self, where: tuple[int, tuple[int, int], tuple[int, int]], key: bytes, targets: np.ndarray) -> None:
+        """Record the transitions from ``key`` to ``targets`` (cycles allowed: see :meth:`by_components`)."""
+        graph = self.graphs.setdefault(where, nx.DiGraph())
+        graph.add_node(key)
+        graph.add_edges_from((key, t.tobytes()) for t in targets)
+        self._ranks.pop(where, None)
+
+    def states(self, n: int, bound: tuple[int, int], window: tuple[int, int], dtype: np.dtype) -> np.ndarray:
+        """Every state of the graph of ``(n, bound, window)``, as keys of ``dtype``."""
+        graph = self.graphs.get((n, bound, window), nx.DiGraph())
+        return np.array([np.frombuffer(key, dtype=dtype)[0] for key in graph.nodes], dtype=dtype)
+
+    def by_components(self) -> Ranks:
+        """Ranks in which each state's rank is its strongly connected component's place in a topological
+        order of the components: a transition inside a component never goes up."""
+        out = Ranks()
+        for where, graph in self.graphs.items():
+            condensed = nx.condensation(graph)
+            place = {c: k for k, c in enumerate(nx.topological_sort(condensed))}
+            out._ranks[where] = {key: place[c] for key, c in condensed.graph["mapping"].items()}
+            out.graphs[where] = graph
+        return out
 
     def rank(self, n: int, bound: tuple[int, int], window: tuple[int, int]) -> dict[bytes, int]:
         where = (n, bound, window)

@@ -4,9 +4,12 @@ Checking each of a million combinations is out of reach; most of them fall to th
 counterexamples. So: check one open combination with the bounded checker; replay each witness it
 finds under every combination still open for that lemma (:func:`fatline_verify.sweep.cover.cover`)
 and close every one it refutes; a lemma that is not violated there gets that one combination's
-verdict (HOLDS_WITHIN_BOUNDS or INCONCLUSIVE). Repeat until nothing is open, or the check budget is
-spent. Each finished check is saved at once (``sweep.json`` + ``status.npz`` + the witnesses), and a
-rerun with the same settings resumes from there.
+verdict (HOLDS_WITHIN_BOUNDS or INCONCLUSIVE), and where it holds, so does every combination that
+cannot tell its reason apart: a safety lemma's (or ``approach``'s) by graph equality
+(:mod:`fatline_verify.sweep.equivalent`), ``progress``'s and ``termination``'s by an invariant over
+the states the checks expanded (:mod:`fatline_verify.sweep.invariant`). Repeat until nothing is
+open, or the check budget is spent. Each finished check is saved at once (``sweep.json`` +
+``status.npz`` + the witnesses), and a rerun with the same settings resumes from there.
 """
 
 from __future__ import annotations
@@ -28,7 +31,7 @@ from ..outputs import Kind, read_json, write_json
 from ..properties import CHECKED, Lemma, LemmaResult, Verdict
 from .cover import cover, refutes
 from .equivalent import Equivalence, Explored, held_past_violations, same_exploration
-from .invariant import TRAPPED, Ranks, Trap, trapped, within_known
+from .invariant import TRAPPED, Trap, spread_termination, trapped, within_known
 from .memo import Memo
 from .space import Space, bearing
 
@@ -151,7 +154,6 @@ class Sweep:
     replays: int = 0
     _projections: dict[Lemma, np.ndarray] = field(default_factory=dict, init=False, repr=False)
     _memo: Memo = field(init=False, repr=False)
-    _ranks: Ranks = field(default_factory=Ranks, repr=False)
     _known: dict[tuple[int, tuple[int, int], tuple[int, int]], np.ndarray] = field(default_factory=dict, repr=False)
     """Per robot count and bounds, every state the checks of this run expanded (for :meth:`_within_known`)."""
 
@@ -321,9 +323,10 @@ class Sweep:
         self, space: Space, among: np.ndarray, reference: Model, explored: list[Explored], lemma: Lemma
     ) -> Equivalence:
         """A liveness lemma's closure: the combinations whose searches stay in the states every check so
-        far expanded (this one's included), meeting no deadlock, and for ``termination`` going up in
-        rank with nothing escaping (:func:`within_known`); for ``termination`` also the combinations
-        this one's states trap (:func:`trapped`: its own rank, where the shared one has no room)."""
+        far expanded (this one's included) and those they meet, with no deadlock (:func:`within_known`);
+        for ``termination``, with nothing escaping and no transition on a cycle of any of their
+        searches (:func:`spread_termination`), and also the combinations this one's states trap
+        (:func:`trapped`: its own rank, where the shared one has no room)."""
         for ex in explored:
             where = (ex.n, ex.bound, ex.window)
             old = self._known.get(where)
@@ -331,8 +334,7 @@ class Sweep:
         known = [Trap(n, bound, window, keys) for (n, bound, window), keys in sorted(self._known.items())]
         if lemma is not Lemma.TERMINATION:
             return within_known(space, among, known, self._memo, grow=GROW)
-        self._ranks.add(reference, explored)
-        shared = within_known(space, among, known, self._memo, self._ranks)
+        shared = spread_termination(space, among, known, self._memo, GROW)
         own = trapped(space, among & ~shared.same, reference, explored, lemma, self._memo)
         return Equivalence(shared.same | own.same, shared.replays + own.replays)
 
