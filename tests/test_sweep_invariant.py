@@ -12,6 +12,7 @@ import pytest
 from fatline_verify.config import load_model
 from fatline_verify.properties import Lemma, Verdict
 from fatline_verify.sweep.invariant import (
+    SPREAD_SAFETY,
     TRAPPED,
     Ranks,
     Trap,
@@ -223,6 +224,29 @@ def test_grown_from_one_reading_the_spread_is_every_readings_own_search(checked)
     assert np.array_equal(got.same, holds), [space.text(space.combo(int(j))) for j in np.flatnonzero(got.same != holds)]
     tight = within_known(space, np.ones(space.size, dtype=bool), known, Memo(space), grow=1)
     assert tight.same.sum() < holds.sum()  # with no room, what leaves the states is not judged
+
+
+STEP_SPACES = {
+    Lemma.RMA_FIXED: ("paper", ("quadrants", "path", "contact", "psi_right")),
+    Lemma.CONNECTIVITY: ("repaired", ("repair_edges", "repair_lock", "repair_step")),
+    Lemma.NO_COLLISION: ("repaired", ("repair_edges", "repair_lock", "repair_step")),
+}
+"""Per step lemma, a small space where it holds under some readings and not others."""
+
+
+@pytest.mark.parametrize("lemma", SPREAD_SAFETY, ids=lambda lemma: lemma.value)
+def test_grown_the_spread_closes_a_step_lemma_exactly_where_its_own_check_finds_it_holding(lemma):
+    """A step lemma spread from one reading's states: the readings left are exactly those whose own
+    check finds no violating transition (some hold and some do not, so both sides are tested)."""
+    name, vary = STEP_SPACES[lemma]
+    space = Space(load_model(name), vary)
+    found = [check_combo(space.model(space.combo(i)), BOUNDS, space.combo(i)) for i in range(space.size)]
+    holds = np.array([f.verdicts[lemma] is Verdict.HOLDS_WITHIN_BOUNDS for f in found])
+    assert 0 < holds.sum() < space.size
+    i = int(np.flatnonzero(holds)[0])
+    known = [Trap(ex.n, ex.bound, ex.window, np.unique(ex.expanded)) for ex in found[i].stopped]
+    got = within_known(space, np.ones(space.size, dtype=bool), known, Memo(space), grow=100_000, lemma=lemma)
+    assert np.array_equal(got.same, holds), [space.text(space.combo(int(j))) for j in np.flatnonzero(got.same != holds)]
 
 
 def test_termination_spread_from_one_reading_closes_only_where_termination_holds(checked):

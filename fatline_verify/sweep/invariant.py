@@ -30,7 +30,7 @@ import networkx as nx
 import numpy as np
 
 from ..config import Model
-from ..properties import Lemma
+from ..properties import SAFETY, Lemma
 from ..systems import system_for
 from ..systems.base import KeyExpansion, expand_keys
 from .equivalent import Equivalence, Explored
@@ -39,6 +39,9 @@ from .space import Space
 
 TRAPPED = (Lemma.PROGRESS, Lemma.TERMINATION)
 """The lemmas an invariant closes."""
+SPREAD_SAFETY = SAFETY
+"""The step lemmas a spread of the open readings' searches closes (:func:`within_known` with ``lemma``):
+a reading holds one when no state its search expands has a transition that violates it."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -95,6 +98,8 @@ class Step:
     """Keys of the transitions the checker follows (inside the bound, violating nothing)."""
     fits: bool
     """Every transition inside the bound."""
+    flags: int = 0
+    """The violation bits of every transition, or-ed (a step lemma is violated here when its bit is set)."""
 
 
 def _initial(trap: Trap, model: Model) -> np.ndarray:
@@ -107,7 +112,16 @@ def _initial(trap: Trap, model: Model) -> np.ndarray:
 def _step(trap: Trap, key: np.ndarray, model: Model) -> Step:
     got = _expand(trap, key, model)
     follow = got.fits & (got.flags == 0)
-    return Step(bool(got.enabled[0] != 0), bool(got.goal[0]), got.key[follow], bool(got.fits.all()))
+    flags = int(np.bitwise_or.reduce(got.flags)) if len(got.flags) else 0
+    return Step(bool(got.enabled[0] != 0), bool(got.goal[0]), got.key[follow], bool(got.fits.all()), flags)
+
+
+def _broken(lemma: Lemma, step: Step) -> bool:
+    """Whether a state expanding to ``step`` refutes ``lemma`` there: a step lemma's bit on one of its
+    transitions; for the others, a deadlock (no robot enabled, not on the goal)."""
+    if lemma in SPREAD_SAFETY:
+        return bool(step.flags & lemma.flag)
+    return not step.goal and not step.enabled
 
 
 def _kept(trap: Trap, k: int, step: Step) -> bool:
@@ -171,10 +185,14 @@ def within_known(
     ranks: Ranks | None = None,
     grow: int = 0,
     taken: Ranks | None = None,
+    lemma: Lemma = Lemma.PROGRESS,
 ) -> Equivalence:
     """Of ``among`` (a mask over ``space``), the combinations under which ``progress`` holds because
     every state their own search reaches is one of ``known`` (the states earlier checks expanded, per
-    robot count), none of them a deadlock there.
+    robot count), none of them a deadlock there; with a step ``lemma`` (:data:`SPREAD_SAFETY`), the
+    combinations under which it holds because no state their search reaches has a transition that
+    violates it (:func:`fatline_verify.checker.lemma_verdicts`: a step lemma is judged on every
+    transition out of an expanded state, followed or not).
 
     A search over all of these combinations at once: each known state carries the combinations that
     reach it; its expansion is asked of ``memo`` for those that are new, and each answer's followed
@@ -190,7 +208,7 @@ def within_known(
     a followed transition out of a state that is not a goal there fails to go up in rank. Every
     transition between non-goal states then goes up, so there is no cycle among them, fair or not.
 
-    ``grow`` > 0 (``progress`` only): a state outside ``known`` is taken in rather than dropping the
+    ``grow`` > 0 (not with ``ranks``): a state outside ``known`` is taken in rather than dropping the
     combinations that reach it, up to ``grow`` new states per robot count. The spread is then every
     open combination's own search at once, and what is left is exactly where no deadlock is reached.
     ``taken``: where to record every transition the spread followed out of a non-goal state (so that
@@ -214,8 +232,8 @@ def within_known(
                 continue
             compute = partial(_step, trap, np.frombuffer(key, dtype=dtype).copy())
             for inside, step in list(memo.answers(("step", *where, key), compute, delta)):
-                if not step.goal and not step.enabled:
-                    alive[inside] = False  # a deadlock
+                if _broken(lemma, step):
+                    alive[inside] = False  # a deadlock, or a violating transition
                     continue
                 if rank is not None and not _up(rank, key, step):
                     alive[inside] = False  # something escapes, or a transition does not go up

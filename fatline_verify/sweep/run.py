@@ -31,7 +31,7 @@ from ..outputs import Kind, read_json, write_json
 from ..properties import CHECKED, Lemma, LemmaResult, Verdict
 from .cover import cover, refutes
 from .equivalent import Equivalence, Explored, held_past_violations, same_exploration
-from .invariant import TRAPPED, Trap, spread_termination, trapped, within_known
+from .invariant import SPREAD_SAFETY, TRAPPED, Trap, spread_termination, trapped, within_known
 from .memo import Memo
 from .space import Space, bearing
 
@@ -41,9 +41,9 @@ OPEN, REFUTED, HOLDS, INCONCLUSIVE = 0, 1, 2, 3
 STATUS = {REFUTED: Verdict.VIOLATED, HOLDS: Verdict.HOLDS_WITHIN_BOUNDS, INCONCLUSIVE: Verdict.INCONCLUSIVE}
 
 GROW = 200_000
-"""States a ``progress`` closure may take in beyond those the checks expanded, per robot count: the
-open readings' searches run together (:func:`within_known`) until they are done or this many new
-states were met."""
+"""States a spread closure (``progress`` and the step lemmas) may take in beyond those the checks
+expanded, per robot count: the open readings' searches run together (:func:`within_known`) until they
+are done or this many new states were met."""
 
 FORMAT = Kind.SWEEP.value
 VERSION = 1
@@ -301,8 +301,8 @@ class Sweep:
             status[space.index(found.combo)] = code
             if code != HOLDS:
                 continue
-            # A liveness lemma closes by an invariant, which covers every stopped graph equal to this one.
-            stopped = self._within_known if lemma in TRAPPED else same_exploration
+            # A spread of the open readings' searches covers every stopped graph equal to this one.
+            stopped = self._within_known if lemma in TRAPPED + SPREAD_SAFETY else same_exploration
             closures = [(stopped, found.stopped)] + (
                 [(same_exploration, found.explored)] if lemma in found.held else []
             )
@@ -322,8 +322,9 @@ class Sweep:
     def _within_known(
         self, space: Space, among: np.ndarray, reference: Model, explored: list[Explored], lemma: Lemma
     ) -> Equivalence:
-        """A liveness lemma's closure: the combinations whose searches stay in the states every check so
-        far expanded (this one's included) and those they meet, with no deadlock (:func:`within_known`);
+        """A spread closure: the combinations whose searches stay in the states every check so far
+        expanded (this one's included) and those they meet, with no deadlock (:func:`within_known`), or
+        for a step lemma no transition that violates it;
         for ``termination``, with nothing escaping and no transition on a cycle of any of their
         searches (:func:`spread_termination`), and also the combinations this one's states trap
         (:func:`trapped`: its own rank, where the shared one has no room)."""
@@ -333,7 +334,7 @@ class Sweep:
             self._known[where] = np.union1d(ex.expanded if old is None else old, ex.expanded)
         known = [Trap(n, bound, window, keys) for (n, bound, window), keys in sorted(self._known.items())]
         if lemma is not Lemma.TERMINATION:
-            return within_known(space, among, known, self._memo, grow=GROW)
+            return within_known(space, among, known, self._memo, grow=GROW, lemma=lemma)
         shared = spread_termination(space, among, known, self._memo, GROW)
         own = trapped(space, among & ~shared.same, reference, explored, lemma, self._memo)
         return Equivalence(shared.same | own.same, shared.replays + own.replays)
