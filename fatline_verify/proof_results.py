@@ -14,15 +14,10 @@ from typing import Any
 
 from .config import Model
 from .outputs import Kind, is_output, read_json, write_json
+from .prove_tasks import row_key
 from .prover import NotEncodedModel, ProofResult, Task, prove_fingerprint, task_key, tasks_for, witness_path
 from .smt.solving import solver_version
 from .trace import write_trace
-
-
-def row_key(row: dict[str, Any]) -> str:
-    """``lemma/form-case[.and.other]`` (rows before encoding 3 had no case: their rule stands in)."""
-    tail = f".and.{row['other']}" if row.get("other") else ""
-    return f"{row['lemma']}/{row['form']}-{row.get('case', row['rule'])}{tail}"
 
 
 class ProofResults:

@@ -404,7 +404,7 @@ def prove_spec(
     for where, doc in known:
         again = replay_known(model, spec, doc, initial=False)
         if again is not None and again.initial:
-            return search.result(Verdict.VIOLATED, _found(again, f"{where}, replayed first"), again)
+            return search.result(Verdict.VIOLATED, _found(again, where, how="replayed first"), again)
         if again is not None and search.non_initial is None:
             # A violation is known to exist (so no unsat can come): the search looks for an initial one,
             # and if it finds none the verdict keeps this configuration instead of losing it.
@@ -424,10 +424,11 @@ def prove_spec(
     return search.give_up(timeout)
 
 
-def _found(got: Replayed, where: str, rounded: bool = False) -> str:
-    """The reason of a VIOLATED verdict; ``rounded``: the solver's values were algebraic."""
+def _found(got: Replayed, where: str, rounded: bool = False, how: str = "replayed") -> str:
+    """The reason of a VIOLATED verdict; ``rounded``: the solver's values were algebraic; ``how``: when
+    the executable model replayed it."""
     tail = "; values rounded from algebraic numbers and re-checked" if rounded else ""
-    return f"{got.what}, from an initial configuration of {len(got.state)} robots ({where}, replayed){tail}"
+    return f"{got.what}, from an initial configuration of {len(got.state)} robots ({where}, {how}){tail}"
 
 
 def _result(

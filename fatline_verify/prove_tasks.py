@@ -63,6 +63,12 @@ class ProofResult:
         return f"{self.lemma}/{self.form}-{self.case}{tail}"
 
 
+def row_key(row: dict[str, Any]) -> str:
+    """``lemma/form-case[.and.other]`` (rows before encoding 3 had no case: their rule stands in)."""
+    tail = f".and.{row['other']}" if row.get("other") else ""
+    return f"{row['lemma']}/{row['form']}-{row.get('case', row['rule'])}{tail}"
+
+
 DEFAULT_SLOTS = 3
 """Slot robots of the global connectivity form, unless asked otherwise."""
 DEFAULT_TIMEOUT = 60.0

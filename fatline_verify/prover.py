@@ -18,7 +18,9 @@ header. Each obligation runs in a fresh process (:mod:`fatline_verify.fresh`). T
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Callable, Mapping
+from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
@@ -39,6 +41,7 @@ from .prove_tasks import (
     Task,
     check_encoded,
     paper_part,
+    row_key,
     task_key,
     tasks_for,
 )
@@ -153,9 +156,8 @@ def prove(
             calls.append((prove_leg, (model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, Spec):
             note = PAPER_PART_NOTE if model.options.repaired else ""
-            own = _known(model, task, traces if traces is not None else out / "traces" if out else None)
-            own = own or _known_configuration(task, earlier)
-            known = ([(EARLIER, own)] if own else []) + _known_beside(model, task, out)
+            written = traces if traces is not None else out / "traces" if out else None
+            known = _known_all(model, task.key, written, out, earlier)
             kwargs = {"timeout": timeout, "out": out, "note": note, "known": known}
             calls.append((prove_spec, (paper_part(model), task), kwargs))
         else:
@@ -181,43 +183,107 @@ def witness_path(model: Model, directory: Path, key: str) -> Path:
     return child(directory, f"{model.name}-prove-{lemma}-{rest}", ".json")
 
 
-def _known(model: Model, task: Spec, traces: Path | None) -> dict[str, Any] | None:
-    """The counterexample an earlier run wrote for ``task`` under ``traces``, if any."""
+def _known_all(
+    model: Model,
+    key: str,
+    traces: Path | None,
+    out: Path | None,
+    earlier: Mapping[str, dict[str, Any]] | None,
+) -> list[Known]:
+    """Every counterexample known for the obligation ``key`` before its search, in the order they are
+    replayed: its own from an earlier run, the same obligation's under the models proved beside this
+    one, then the same for its mirror image (:func:`mirror_key`), reflected in the x-axis. Each is only
+    a candidate: :func:`replay_known` keeps it only if, under this model, its r decides this case and
+    breaks this claim."""
+    own = _known(model, key, traces) or _known_configuration(key, earlier)
+    found = ([(EARLIER, own)] if own else []) + _known_beside(key, out)
+    mirror = mirror_key(key)
+    if mirror is not None:
+        theirs = _known(model, mirror, traces) or _known_configuration(mirror, earlier)
+        mirrored = ([(EARLIER, theirs)] if theirs else []) + _known_beside(mirror, out)
+        _, case = mirror.split("/", 1)
+        found += [(f"the mirror image (y to -y) of {where} for {case}", reflect(doc)) for where, doc in mirrored]
+    return found
+
+
+_MIRROR = {"scenario-2": "scenario-3", "scenario-3": "scenario-2", "up": "down", "down": "up"}
+
+
+def mirror_key(key: str) -> str | None:
+    """The obligation whose case is ``key``'s reflected in the x-axis: Scenario 2 ("R∩B is non-empty
+    ... moves upwards") and Scenario 3 (R∩D, downwards) trade places, and so do their search's up and
+    down candidates; ``None`` for a case of another rule (Scenario 1 moves right, Scenario 4 towards
+    −Y: neither has a mirror among the rules)."""
+    lemma, rest = key.split("/", 1)
+    if ("scenario-2" not in rest and "scenario-3" not in rest) or "scenario-4" in rest or "scenario-1" in rest:
+        return None
+    return f"{lemma}/" + re.sub(r"scenario-[23]|\bup\b|\bdown\b", lambda m: _MIRROR[m.group(0)], rest)
+
+
+def reflect(doc: dict[str, Any]) -> dict[str, Any]:
+    """A counterexample reflected in the x-axis: the initial positions (a trace) or the configuration
+    (a results row) with y negated; everything else as it was (the replay recomputes the rest)."""
+
+    def neg(v: Any) -> str:
+        return str(-Fraction(str(v)))
+
+    if "configuration" in doc:
+        flipped = []
+        for point in doc["configuration"]:
+            x, _, y = str(point).partition(",")
+            flipped.append(f"{x},{neg(y)}" if y else str(point))
+        return {"configuration": flipped}
+    out = dict(doc)
+    if isinstance(doc.get("initial"), list):
+        out["initial"] = [[p[0], neg(p[1])] if isinstance(p, list) and len(p) == 2 else p for p in doc["initial"]]
+    return out
+
+
+def _known(model: Model, key: str, traces: Path | None) -> dict[str, Any] | None:
+    """The counterexample an earlier run wrote for the obligation ``key`` under ``traces``, if any."""
     from .outputs import Kind, is_output, read_json
 
     if traces is None:
         return None
-    path = witness_path(model, traces, task.key)
+    path = witness_path(model, traces, key)
     return read_json(path) if path.is_file() and is_output(path, Kind.TRACE) else None
 
 
-def _known_beside(model: Model, task: Spec, out: Path | None) -> list[Known]:
-    """The same obligation's counterexample traces under the other models proved beside this one
-    (``OUT/../OTHER/traces``), in name order. A reading that does not bear on the case leaves such a
-    trace a counterexample here too; the replay (:func:`replay_known`) decides, under this model, that
-    its r decides the same case, breaks the same claim and starts from an initial configuration."""
+def _known_beside(key: str, out: Path | None) -> list[Known]:
+    """The same obligation's counterexamples under the other models proved beside this one
+    (``OUT/../OTHER``: its trace, or for a claim without a trace its results row's configuration), in
+    name order. A reading that does not bear on the case leaves such a counterexample one here too;
+    the replay (:func:`replay_known`) decides, under this model, that its r decides the same case,
+    breaks the same claim and starts from an initial configuration."""
     from .outputs import Kind, is_output, read_json
 
     if out is None or not out.parent.is_dir():
         return []
-    _, rest = task.key.split("/", 1)
+    lemma, rest = key.split("/", 1)
     found: list[Known] = []
     for results in sorted(out.parent.glob("*/results.json")):
         other = results.parent
         if other.resolve() == out.resolve() or not is_output(results, Kind.PROVE):
             continue
-        path = other / "traces" / f"{other.name}-prove-{task.lemma}-{rest}.json"
+        where = f"a counterexample found under model {other.name}"
+        path = other / "traces" / f"{other.name}-prove-{lemma}-{rest}.json"
         if path.is_file() and is_output(path, Kind.TRACE):
             doc = read_json(path)
             if doc is not None:
-                found.append((f"a counterexample found under model {other.name}", doc))
+                found.append((where, doc))
+                continue
+        rows = read_json(results) or {}
+        by_key = {row_key(row): row for row in rows.get("obligations", []) if isinstance(row, dict)}
+        configuration = _known_configuration(key, by_key)
+        if configuration is not None:
+            found.append((where, configuration))
     return found
 
 
-def _known_configuration(task: Spec, earlier: Mapping[str, dict[str, Any]] | None) -> dict[str, Any] | None:
-    """The configuration an earlier run replayed as a counterexample of ``task`` (a claim without a
-    trace), from its results row, if any."""
-    row = (earlier or {}).get(task.key)
+def _known_configuration(key: str, earlier: Mapping[str, dict[str, Any]] | None) -> dict[str, Any] | None:
+    """The configuration an earlier run replayed as a counterexample of the obligation ``key`` (a
+    claim without a trace), from its results row, if any."""
+    row = (earlier or {}).get(key)
     if row is None or row.get("verdict") != "VIOLATED" or not row.get("configuration"):
         return None
     return {"configuration": list(row["configuration"])}
