@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import os
 import re
+import time
 from collections.abc import Callable, Mapping
 from fractions import Fraction
 from pathlib import Path
@@ -74,6 +75,19 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
 
     from .smt.solving import WALL
 
+    t0 = time.perf_counter()
+    found = _global_on_lattice(model, slots)
+    spent = time.perf_counter() - t0
+    if found is not None:
+        k, doc = found
+        return result(
+            Verdict.VIOLATED,
+            k,
+            f"the graph splits, from an initial configuration of {k + 1} robots (lattice q={model.parameters.q}, "
+            f"every initial configuration in a {GLOBAL_WINDOW[0]}x{GLOBAL_WINDOW[1]} window and every activation set, "
+            "replayed)",
+            doc,
+        )
     attempts = [(k, True, timeout / 2 / slots) for k in range(1, slots + 1)] + [(slots, False, timeout / 2)]
     last = None
     for k, initial, planned in attempts:
@@ -117,6 +131,32 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
     if ans.status == "unsat":
         return result(Verdict.HOLDS_WITHIN_BOUNDS, k, f"unsat for configurations of at most {k + 1} robots")
     return result(Verdict.INCONCLUSIVE, k, f"solver: {ans.reason}")
+
+
+GLOBAL_WINDOW = (7, 7)
+"""Where the global form looks on the model's own lattice before asking the solver."""
+GLOBAL_STATES = 200_000
+"""At most this many states per robot count for that look (it needs only the first round)."""
+
+
+def _global_on_lattice(model: Model, slots: int) -> tuple[int, dict[str, Any]] | None:
+    """A round that splits the graph from an initial configuration on the model's lattice, found by the
+    checker's own search (every initial configuration of 2 to ``slots + 1`` robots in
+    :data:`GLOBAL_WINDOW`, every activation set the scheduler allows): its shortest connectivity
+    witness, when that is one round long, is a counterexample of the global form, already replayed by
+    the executable model. ``(slots, trace)`` with the robots besides r, or ``None``."""
+    from .checker import CheckPlan, explore_robots, lemma_verdicts
+
+    for n in range(2, slots + 2):
+        plan = CheckPlan.of(model, (n, n), GLOBAL_WINDOW, max_states=GLOBAL_STATES, engine="fast")
+        for got in lemma_verdicts(explore_robots(plan, n)):
+            doc = got.witness
+            if got.lemma is not Lemma.CONNECTIVITY or got.verdict is not Verdict.VIOLATED or doc is None:
+                continue
+            if len(doc.get("rounds", [])) == 1 and doc.get("violation", {}).get("components"):
+                origin = {"tool": "fatline prove", "lemma": Lemma.CONNECTIVITY.value, "form": "global"}
+                return n - 1, {**doc, "origin": origin}
+    return None
 
 
 def prove(

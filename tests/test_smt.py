@@ -161,7 +161,7 @@ def test_a_claim_counterexample_is_a_configuration_decide_replays():
 
 def test_global_connectivity_form_matches_the_checker_on_two_robots(tmp_path):
     # The lattice checker finds 2-robot disconnections under the default readings and none under the
-    # literal ones; the global obligation over the reals agrees.
+    # literal ones; the global obligation over the reals agrees (sat, and unsat under literal).
 
     broken = isolated(prove_global, load_model("paper"), slots=1, timeout=20, out=tmp_path)
     assert broken.verdict is Verdict.VIOLATED
@@ -170,6 +170,21 @@ def test_global_connectivity_form_matches_the_checker_on_two_robots(tmp_path):
     kept = isolated(prove_global, load_model("paper-literal"), slots=1, timeout=20, out=None)
     assert kept.verdict is Verdict.HOLDS_WITHIN_BOUNDS
     assert recheck_file(tmp_path / "connectivity" / "global.smt2") == "sat"
+
+
+def test_global_form_looks_on_the_lattice_first_and_keeps_a_one_round_split_only():
+    """Under the literal readings two robots never split, three do (the solver alone ran out of time
+    on it): the checker's search of every initial configuration in the window finds the round, and
+    the result is its replayed trace, one round from an initial configuration."""
+    from fatline_verify.prover import _global_on_lattice
+
+    model = load_model("paper-literal")
+    assert _global_on_lattice(model, 1) is None
+    result = isolated(prove_global, model, slots=2, timeout=5, out=None)
+    assert result.verdict is Verdict.VIOLATED and "lattice q=1" in result.reason, result.reason
+    assert result.slots == 2 and len(result.witness["initial"]) == 3 and len(result.witness["rounds"]) == 1
+    assert result.witness["origin"]["form"] == "global"
+    check_replay(json.loads(json.dumps(result.witness)), model)
 
 
 def test_forms_follow_the_scheduler():
@@ -211,9 +226,17 @@ def test_lockstep_l_shaped_paths_are_encoded():
 def test_global_form_activates_what_the_scheduler_allows(scheduler, movers):
     model = make_model(scheduler=scheduler)
     result = isolated(prove_global, model, slots=1, timeout=20, out=None)
+    from fatline_verify.schedule import play_round
+
     assert result.verdict is Verdict.VIOLATED
-    assert len(result.witness["rounds"][0]["active"]) == movers
+    active = result.witness["rounds"][0]["active"]
     check_replay(json.loads(json.dumps(result.witness)), model)
+    if movers == 1:
+        assert len(active) == 1
+    else:  # every robot that moves when all look: each one the rules move is active
+        state = tuple(tuple(model.to_lattice(tuple(Fr(str(v)) for v in p))) for p in result.witness["initial"])
+        every = play_round(state, tuple(range(len(state))), model)
+        assert active == [i for i in range(len(state)) if every.after[i] != state[i]], (active, every.after)
 
 
 def _cvc5_serve(conn) -> None:
