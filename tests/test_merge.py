@@ -81,7 +81,14 @@ def test_prove_redo_inconclusive_reruns_only_those_rows(tmp_path, monkeypatch):
     monkeypatch.chdir(ROOT)
     out = tmp_path / "proofs"
     shutil.copytree(ROOT / "proofs" / "paper", out / "paper")
-    before = _rows(out / "paper" / "results.json")
+    # The committed rows may all be decided: make two INCONCLUSIVE and drop a third (missing) here.
+    results = out / "paper" / "results.json"
+    data = json.loads(results.read_text())
+    for row in data["obligations"][:2]:
+        row["verdict"] = "INCONCLUSIVE"
+    missing = row_key(data["obligations"].pop(2))
+    results.write_text(json.dumps(data))
+    before = _rows(results)
     asked: list[str] = []
     fake = _fake_prove(Verdict.PROVED)
 
@@ -92,10 +99,10 @@ def test_prove_redo_inconclusive_reruns_only_those_rows(tmp_path, monkeypatch):
     monkeypatch.setattr(prover, "prove", counting)
     code = main(["prove", "paper", "--redo-inconclusive", "--out", str(out), "-q"])
     assert code in (0, 1)
-    open_keys = {k for k, row in before.items() if row["verdict"] == "INCONCLUSIVE"}
-    assert open_keys and set(asked) == open_keys
+    open_keys = {k for k, row in before.items() if row["verdict"] == "INCONCLUSIVE"} | {missing}
+    assert len(open_keys) == 3 and set(asked) == open_keys
     after = _rows(out / "paper" / "results.json")
-    assert after.keys() == before.keys()
+    assert after.keys() == before.keys() | {missing}
     for key, row in after.items():
         if key in open_keys:
             assert row["reason"] == "fake" and row["verdict"] == "PROVED"
