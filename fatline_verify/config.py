@@ -88,6 +88,12 @@ class Model:
     algorithm: Callable[..., Any] | None = field(default=None, repr=False, compare=False)
     """A replacement for :func:`fatline_verify.algorithm.decide` (seeded-bug tests); ``None`` is the paper's."""
 
+    def with_q(self, q: int) -> Model:
+        """The same model on a lattice of ``q`` points per radius (every other parameter kept)."""
+        from dataclasses import replace
+
+        return replace(self, parameters=replace(self.parameters, q=q))
+
     # --- lattice quantities, all in lattice units (radius = q) -------------------------------
     @property
     def radius(self) -> int:

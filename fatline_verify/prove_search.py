@@ -25,6 +25,11 @@ open, each step with its own z3 context and deterministic budget (:class:`Budget
    is INCONCLUSIVE with the configuration and what would decide it; ``unknown`` after the last round
    is INCONCLUSIVE with the budget.
 
+After the first round, an obligation still open has its **small swarms enumerated**
+(:mod:`~fatline_verify.prove_small`: every initial configuration of 2 to 4 robots in a 9x9 window at
+q = 1 and q = 2, each robot as r, by the executable model alone), once: where most roles fall on a
+few robots, a counterexample the solver's search of a dozen named robots misses is there.
+
 A replay that disagrees with the encoding (r decides another case, or the claim holds) is a bug of
 the tool and reported as "encoding disagreement".
 """
@@ -38,6 +43,7 @@ from typing import TYPE_CHECKING
 from .config import Model
 from .properties import Verdict
 from .prove_replay import Known, Replayed, replay, replay_known
+from .prove_small import SMALL_TEXT
 from .prove_tasks import ProofResult
 from .smt.claims import (
     TWO_MOVERS,
@@ -189,6 +195,8 @@ class _Search(Budget):
         self.linear_done = self.linear_initial_done = False
         """Whether the obligation's linearization answered (or cannot go on; then the initial search's runs),
         whether the initial search's did."""
+        self.small_done = False
+        """Whether the small swarms (:mod:`~fatline_verify.prove_small`) were enumerated (once)."""
 
     def result(self, verdict: Verdict, reason: str, rep: Replayed | None = None) -> ProofResult:
         named = len(self.full.bodies) - 1
@@ -211,6 +219,25 @@ class _Search(Budget):
             return self.result(Verdict.PROVED, "the case never fires under these readings (vacuous)")
         self.fires = status == "sat"
         return None
+
+    def small(self) -> ProofResult | None:
+        """The small swarms of :mod:`~fatline_verify.prove_small`, enumerated once: VIOLATED with the
+        first configuration whose r decides this case and breaks the claim from an initial configuration
+        (replayed). No solver is asked, so no budget is spent; its seconds are counted."""
+        import time
+
+        from .prove_small import small_swarm_counterexample
+
+        if self.small_done:
+            return None
+        self.small_done = True
+        start = time.perf_counter()
+        found = small_swarm_counterexample(self.model, self.spec)
+        self.wall += time.perf_counter() - start
+        if found is None:
+            return None
+        got, q = found
+        return self.result(Verdict.VIOLATED, _found(got, f"small swarms enumerated, lattice q={q}"), got)
 
     def lattices(self, budget: float) -> ProofResult | None:
         from .smt.cases import Arith
@@ -346,6 +373,8 @@ class _Search(Budget):
     def give_up(self, timeout: float) -> ProofResult:
         """INCONCLUSIVE after every round, with what is known and what would decide it."""
         lattices = f"no initial counterexample on the lattices q={LATTICES_TEXT}"
+        if self.small_done:
+            lattices += f" or among small swarms ({SMALL_TEXT})"
         if self.spec.form == TWO_MOVERS:
             return self.result(
                 Verdict.INCONCLUSIVE,
@@ -367,7 +396,9 @@ class _Search(Budget):
         initial_too = (
             "none from an initial configuration over the reals"
             if self.initial_unsat
-            else f"no initial one on the lattices q={LATTICES_TEXT} or the reals within the budget"
+            else f"no initial one on the lattices q={LATTICES_TEXT}"
+            + (f", among small swarms ({SMALL_TEXT})" if self.small_done else "")
+            + " or the reals within the budget"
         )
         return self.result(
             Verdict.INCONCLUSIVE,
@@ -379,9 +410,17 @@ class _Search(Budget):
 
 
 def prove_spec(
-    model: Model, spec: Spec, *, timeout: float, out: Path | None, note: str = "", known: Sequence[Known] = ()
+    model: Model,
+    spec: Spec,
+    *,
+    timeout: float,
+    out: Path | None,
+    note: str = "",
+    known: Sequence[Known] = (),
+    small: bool = True,
 ) -> ProofResult:
     """Decide one obligation (see the module docstring); write its real-number form under ``out``.
+    ``small=False`` leaves out the small swarms' enumeration (the solver's search alone).
 
     The search runs in rounds of growing budget (:func:`rounds`), each round every step that is still
     open (vacuity in the first only), so an easy answer costs a small round and a hard one gets most
@@ -419,7 +458,12 @@ def prove_spec(
             found = found or search.reals(budget, max(0.0, unused))
         if found is not None:
             return found
-        if search.done() or search.left() < MIN_CHECK:
+        if search.done():
+            break
+        found = search.small() if small else None  # after the first round: most are decided in it
+        if found is not None:
+            return found
+        if search.left() < MIN_CHECK:
             break
     return search.give_up(timeout)
 

@@ -359,7 +359,10 @@ a finer grid: most of the time went to Python, not z3), its budget counted at 3 
 rate (was 4), a polish repeated at most 3 times per set of free unknowns, and a check's clock limit
 0.1 s above 1.5 times its budget (a sliver of budget stopped by the clock was reported as load),
 and an earlier run's counterexample of a claim without a trace (its row's configuration) replayed
-first, as traces were."""
+first, as traces were. Not bumped for the small swarms enumerated after the first round
+(:mod:`fatline_verify.prove_small`): they find nothing where a row is PROVED (a test runs every
+PROVED row of ``proofs/`` through them), and a VIOLATED row replays its own counterexample first, so
+only an INCONCLUSIVE row can change, which ``--redo-inconclusive`` re-runs."""
 
 
 __all__ = [

@@ -349,8 +349,8 @@ def test_a_counterexample_beyond_the_first_round_is_found_in_a_later_one():
     later (the linearization finds a violation that is not initial, then an initial one)."""
     model = make_model()
     spec = _spec(model, "connectivity/one-mover-scenario-2.up-1-after-down")
-    first = isolated(prove_spec, model, spec, timeout=2, out=None)
-    later = isolated(prove_spec, model, spec, timeout=20, out=None)
+    first = isolated(prove_spec, model, spec, timeout=2, out=None, small=False)  # the solver's search alone
+    later = isolated(prove_spec, model, spec, timeout=20, out=None, small=False)
     assert first.verdict is Verdict.INCONCLUSIVE
     assert later.verdict is Verdict.VIOLATED and later.witness is not None
     run = check_replay(later.witness, model)  # raises unless every value reproduces
@@ -363,9 +363,9 @@ def test_a_verdict_near_the_budget_is_the_same_on_every_run():
     even with the machine busy in between."""
     model = make_model()
     spec = _spec(model, "no-collision/one-mover-scenario-2.up-2-after-down")
-    first = isolated(prove_spec, model, spec, timeout=3, out=None)
+    first = isolated(prove_spec, model, spec, timeout=3, out=None, small=False)
     busy = sum(i * i for i in range(2_000_000))  # load between the runs
-    second = isolated(prove_spec, model, spec, timeout=3, out=None)
+    second = isolated(prove_spec, model, spec, timeout=3, out=None, small=False)
     assert busy and first.verdict is second.verdict is Verdict.INCONCLUSIVE
     assert first.reason == second.reason and "rlimit" in first.reason, (first.reason, second.reason)
 

@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import argparse
-from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
-from ..config import Model, Parameters, parse_robots, parse_window
+from ..config import Model, parse_robots, parse_window
 from ..errors import InvalidInput
 from ..outputs import Kind, claim_dir, claim_file, claim_files, write_json
 from ..progress import Progress
@@ -33,9 +32,8 @@ MAX_STATES_LIMIT = 10**10
 
 
 def with_q(model: Model, q: int) -> Model:
-    """The model on a lattice of ``q`` points per radius."""
-    p = model.parameters
-    return replace(model, parameters=Parameters(rad_v=p.rad_v, q=q, delta=p.delta))
+    """The model on a lattice of ``q`` points per radius (``async_steps`` and the rest kept)."""
+    return model.with_q(q)
 
 
 def stage_callback(bar: Progress) -> Any:

@@ -1,0 +1,91 @@
+"""Small swarms, enumerated: a counterexample of a per-case obligation looked for among every initial
+configuration of a few robots on a lattice, by the executable model alone (no solver).
+
+The solver searches the obligation's named robots (r, its witnesses, the robot the claim is about),
+up to a dozen of them, each anywhere; a counterexample where most roles fall on the same few robots
+can lie beyond its budget though a handful of robots on a coarse lattice show it. This step is the
+checker's idea applied to one decision case: every initial configuration of 2 to ``n`` robots in a
+window of the lattices of :data:`SMALL` (:func:`fatline_verify.explore.initial.initial_array`: up to
+translation, each once), every robot of it as r; where r's decision falls in the obligation's case,
+the claim is tested on that configuration, and a hit is replayed by :func:`~fatline_verify.prove_replay.replay`
+exactly as a solver's answer would be. It finds nothing where the claim holds, whatever the size, so
+it runs only for obligations the first round left open (:func:`fatline_verify.prove_search.prove_spec`).
+What it searched is bounded and says so; only a find is a verdict.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from fractions import Fraction
+
+from .cases import case_of
+from .config import Model
+from .numbers import Point
+from .options import Scheduler
+from .prove_replay import Replayed, replay
+from .schedule import Collision, decide_all, lost_edges, play_round
+from .smt.claims import CLOSER, ONE_MOVER, TWO_MOVERS, Spec
+
+SMALL: tuple[tuple[int, int, tuple[int, int]], ...] = ((1, 4, (9, 9)), (2, 4, (9, 9)))
+"""``(q, robots, window)``: the lattice ``x = X / q``, the largest swarm, the window in lattice points.
+Measured on ``paper`` (this machine): q = 1, 2-4 robots, about 0.3 s; q = 2, 2-4 robots in 9x9
+(4 radii a side; 10,750 configurations of 4 robots), about 2 s. At q = 2 with 5 robots in 11x11
+(636,204 configurations) it takes 3 minutes: beyond what one obligation should spend."""
+
+SMALL_TEXT = "; ".join(f"2 to {n} robots in {w[0]}x{w[1]} at q={q}" for q, n, w in SMALL)
+"""How a reason names what was enumerated."""
+
+
+def _swarms(model: Model) -> Iterator[tuple[int, Model, tuple[Point, ...]]]:
+    """Every initial configuration of :data:`SMALL`, smallest first: ``(q, model at q, state)``."""
+    from .explore.initial import initial_array
+
+    for q, most, window in SMALL:
+        mq = model.with_q(q)
+        for n in range(2, most + 1):
+            for row in initial_array(n, window, mq):
+                yield q, mq, tuple((int(x), int(y)) for x, y in row)
+
+
+def _focuses(spec: Spec, mq: Model, state: tuple[Point, ...], i: int, decisions: dict) -> list[int]:  # type: ignore[type-arg]
+    """The robots worth replaying as the claim's other robot when ``i`` is r (one-mover: those r's
+    round alone collides with or loses; two movers: those deciding one of ``spec.other``), or
+    ``[-1]`` for a claim about r alone."""
+    others = [j for j in range(len(state)) if j != i]
+    if spec.form == CLOSER:
+        return others
+    if spec.form == TWO_MOVERS:
+        return [j for j in others if case_of(decisions[j], mq) in spec.other]
+    if spec.form != ONE_MOVER:
+        return [-1]
+    if mq.options.scheduler is Scheduler.FSYNC:
+        return others
+    result = play_round(state, [i], mq, decisions)
+    hit = {v.robots[0] + v.robots[1] - i for v in result.violations if isinstance(v, Collision) and i in v.robots}
+    hit |= {a + b - i for (a, b), _ in lost_edges(result.before, result.after, mq) if i in (a, b)}
+    return sorted(hit)
+
+
+def small_swarm_counterexample(model: Model, spec: Spec) -> tuple[Replayed, int] | None:
+    """The first configuration of :data:`SMALL` (in enumeration order) in which some robot, as r,
+    decides ``spec``'s case and breaks its claim from an initial configuration, replayed under
+    ``model``; with the lattice it was found on. ``None`` if there is none."""
+    for q, mq, state in _swarms(model):
+        decisions = decide_all(state, mq)
+        for i, decision in decisions.items():
+            if case_of(decision, mq) not in spec.mine:
+                continue
+            r = state[i]
+            rel = {j: (Fraction(p[0] - r[0], q), Fraction(p[1] - r[1], q)) for j, p in enumerate(state) if j != i}
+            for j in _focuses(spec, mq, state, i, decisions):
+                focus = "" if j < 0 else "s" if spec.form == TWO_MOVERS else "o"
+                positions = {"r": (Fraction(0), Fraction(0)), **{f"x{k}": p for k, p in rel.items() if k != j}}
+                if j >= 0:
+                    positions[focus] = rel[j]
+                got = replay(model, spec, positions, focus)
+                if isinstance(got, Replayed) and got.initial:
+                    return got, q
+    return None
+
+
+__all__ = ["SMALL", "SMALL_TEXT", "small_swarm_counterexample"]

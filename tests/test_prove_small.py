@@ -1,0 +1,90 @@
+"""The prover's small swarms (``fatline_verify.prove_small``): every initial configuration of a few
+robots on a coarse lattice, each robot as r, searched for the obligation's case and a broken claim by
+the executable model alone."""
+
+from __future__ import annotations
+
+import pytest
+
+from fatline_verify.cases import case_of
+from fatline_verify.config import load_model
+from fatline_verify.properties import Verdict
+from fatline_verify.prove_search import prove_spec
+from fatline_verify.prove_small import SMALL, small_swarm_counterexample
+from fatline_verify.prover import tasks_for
+from fatline_verify.schedule import decide_all, play_round
+from fatline_verify.trace import check_replay
+
+# paper-drop-touch: Scenario 2's search fails both ways, I's top robot is also in C less than 2 below
+# r, so "y_p = -d + 2" moves r *up*, into a robot of A (the solver's search of 13 named robots found
+# no initial counterexample within 60 s).
+DROP_UP = "no-collision/one-mover-scenario-4-I-nonempty.from-scenario-2"
+
+
+def _task(model, key):
+    return next(t for t in tasks_for(model) if t.key == key)
+
+
+def test_small_swarms_find_the_drop_that_goes_up():
+    model = load_model("paper-drop-touch")
+    task = _task(model, DROP_UP)
+    found = small_swarm_counterexample(model, task)
+    assert found is not None
+    got, q = found
+    assert q == 2 and got.initial and got.what == "collision"  # q = 1 holds no robot of I u C beyond delta
+    state = got.state
+    decisions = decide_all(state, model)
+    assert case_of(decisions[0], model) in task.mine
+    dy = decisions[0].destination[1]
+    assert dy > 0  # the "drop" goes up
+    result = play_round(state, [0], model, decisions)
+    assert any(v.lemma.value == "no-collision" and 0 in v.robots for v in result.violations)
+    check_replay(got.doc, model)  # the trace reproduces value for value
+
+
+def test_a_case_the_prover_proves_has_no_small_swarm_counterexample():
+    """Differential: where z3 proves a claim for every swarm size, the enumeration finds nothing (and
+    where it refutes one, here Scenario 1's collision with a robot r cannot see, it finds one too)."""
+    model = load_model("paper")
+    for key in ("connectivity/closer-scenario-1", "rma-fixed/seen-scenario-1", "approach/x-nondecreasing-scenario-1"):
+        task = _task(model, key)
+        assert small_swarm_counterexample(model, task) is None, key
+        assert prove_spec(model, task, timeout=20, out=None, small=False).verdict is Verdict.PROVED, key
+    found = small_swarm_counterexample(model, _task(model, "no-collision/one-mover-scenario-1"))
+    assert found is not None and found[0].what == "collision"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["paper", "paper-literal", "paper-drop-touch"])
+def test_no_proved_row_of_the_shipped_proofs_has_a_small_swarm_counterexample(name):
+    """Differential, exhaustive: every obligation ``proofs/`` holds PROVED, enumerated."""
+    import json
+    from pathlib import Path
+
+    from fatline_verify.proof_results import row_key
+
+    model = load_model(name)
+    rows = json.loads((Path(__file__).parent.parent / "proofs" / name / "results.json").read_text())["obligations"]
+    proved = {row_key(r) for r in rows if r["verdict"] == "PROVED"}
+    tasks = [t for t in tasks_for(model) if getattr(t, "key", None) in proved]
+    assert tasks
+    assert [t.key for t in tasks if small_swarm_counterexample(model, t) is not None] == []
+
+
+def test_the_prover_asks_the_small_swarms_after_its_first_round():
+    """With one round too small for the solver, the enumeration decides and says where it looked."""
+    model = load_model("paper-drop-touch")
+    task = _task(model, DROP_UP)
+    result = prove_spec(model, task, timeout=0.5, out=None)
+    assert result.verdict is Verdict.VIOLATED and "small swarms enumerated, lattice q=2" in result.reason
+    alone = prove_spec(model, task, timeout=0.5, out=None, small=False)
+    assert alone.verdict is Verdict.INCONCLUSIVE and "small swarms" not in alone.reason
+
+
+@pytest.mark.parametrize("q, robots, window", SMALL)
+def test_the_enumerated_lattices_are_within_one_obligation_s_means(q, robots, window):
+    """What the step enumerates stays small: its bound is part of every reason that cites it."""
+    from fatline_verify.explore.initial import initial_array
+
+    model = load_model("paper").with_q(q)
+    assert sum(len(initial_array(n, window, model)) for n in range(2, robots + 1)) < 50_000
