@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 import tomllib
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -90,8 +90,6 @@ class Model:
 
     def with_q(self, q: int) -> Model:
         """The same model on a lattice of ``q`` points per radius (every other parameter kept)."""
-        from dataclasses import replace
-
         return replace(self, parameters=replace(self.parameters, q=q))
 
     # --- lattice quantities, all in lattice units (radius = q) -------------------------------

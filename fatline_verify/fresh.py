@@ -9,6 +9,7 @@ from __future__ import annotations
 import multiprocessing
 import multiprocessing.connection
 import signal
+import time
 from collections.abc import Callable
 from multiprocessing.connection import Connection
 from typing import Any, cast
@@ -31,10 +32,21 @@ def _child(conn: Any, fn: Callable[..., Any], args: tuple[Any, ...], kwargs: dic
     conn.close()
 
 
-def run_fresh(calls: list[Call], workers: int, done: Callable[[int, Any], None]) -> None:
+def run_fresh(
+    calls: list[Call],
+    workers: int,
+    done: Callable[[int, Any], None],
+    *,
+    limit: float | None = None,
+    overrun: Callable[[int, float], Any] | None = None,
+) -> None:
     """Run each call in a new interpreter (spawn), at most ``workers`` at once; ``done(k, answer)``
     as each finishes. z3's answers depend on the terms a process created before, so one process per
     call makes every answer independent of the others and of the order.
+
+    ``limit``: wall-clock seconds after which a call's process is killed and ``done(k, overrun(k,
+    seconds))`` reports it instead (a solver can ignore its own limits: z3 was seen in one integer
+    check for over half an hour under a budget of 84 s). Without ``overrun`` there is no limit.
 
     An interrupt (or any error) kills every running worker at once and propagates: nothing waits for
     a solver to finish. (``ProcessPoolExecutor`` cannot promise that: after ``shutdown`` its manager
@@ -43,6 +55,8 @@ def run_fresh(calls: list[Call], workers: int, done: Callable[[int, Any], None])
     ctx = multiprocessing.get_context("spawn")
     pending = list(enumerate(calls))[::-1]
     running: dict[Any, tuple[int, Any]] = {}
+    started: dict[int, float] = {}
+    guard = limit if overrun is not None else None
     try:
         while pending or running:
             while pending and len(running) < workers:
@@ -50,9 +64,25 @@ def run_fresh(calls: list[Call], workers: int, done: Callable[[int, Any], None])
                 receive, send = ctx.Pipe(duplex=False)
                 proc = ctx.Process(target=_child, args=(send, fn, args, kwargs), daemon=True)
                 proc.start()
+                started[k] = time.monotonic()
                 send.close()
                 running[receive] = (k, proc)
-            for ready in multiprocessing.connection.wait(list(running)):
+            wait = (
+                None
+                if guard is None
+                else max(0.0, min(started[k] + guard for k, _ in running.values()) - time.monotonic())
+            )
+            ready_now = multiprocessing.connection.wait(list(running), timeout=wait)
+            if guard is not None and overrun is not None:
+                for conn, (k, proc) in list(running.items()):
+                    elapsed = time.monotonic() - started[k]
+                    if conn not in ready_now and elapsed >= guard:
+                        running.pop(conn)
+                        proc.kill()
+                        proc.join(timeout=5)
+                        conn.close()
+                        done(k, overrun(k, elapsed))
+            for ready in ready_now:
                 conn = cast(Connection, ready)
                 k, proc = running.pop(conn)
                 try:

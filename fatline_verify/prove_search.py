@@ -396,9 +396,8 @@ class _Search(Budget):
         initial_too = (
             "none from an initial configuration over the reals"
             if self.initial_unsat
-            else f"no initial one on the lattices q={LATTICES_TEXT}"
-            + (f", among small swarms ({SMALL_TEXT})" if self.small_done else "")
-            + " or the reals within the budget"
+            else f"no initial one on the lattices q={LATTICES_TEXT} or the reals within the budget"
+            + (f", nor among small swarms ({SMALL_TEXT})" if self.small_done else "")
         )
         return self.result(
             Verdict.INCONCLUSIVE,

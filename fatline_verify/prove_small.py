@@ -20,6 +20,7 @@ from fractions import Fraction
 
 from .cases import case_of
 from .config import Model
+from .errors import InvalidModel
 from .numbers import Point
 from .options import Scheduler
 from .prove_replay import Replayed, replay
@@ -32,16 +33,20 @@ Measured on ``paper`` (this machine): q = 1, 2-4 robots, about 0.3 s; q = 2, 2-4
 (4 radii a side; 10,750 configurations of 4 robots), about 2 s. At q = 2 with 5 robots in 11x11
 (636,204 configurations) it takes 3 minutes: beyond what one obligation should spend."""
 
-SMALL_TEXT = "; ".join(f"2 to {n} robots in {w[0]}x{w[1]} at q={q}" for q, n, w in SMALL)
+SMALL_TEXT = " and ".join(f"2 to {n} robots in {w[0]}x{w[1]} at q={q}" for q, n, w in SMALL)
 """How a reason names what was enumerated."""
 
 
 def _swarms(model: Model) -> Iterator[tuple[int, Model, tuple[Point, ...]]]:
-    """Every initial configuration of :data:`SMALL`, smallest first: ``(q, model at q, state)``."""
+    """Every initial configuration of :data:`SMALL`, lattice by lattice in its order and fewest robots
+    first on each: ``(q, model at q, state)``; a lattice the model's ``rad_v`` is not whole on is left out."""
     from .explore.initial import initial_array
 
     for q, most, window in SMALL:
-        mq = model.with_q(q)
+        try:
+            mq = model.with_q(q)
+        except InvalidModel:  # rad_v * q not an integer (rad_v = 7/2 at q = 1)
+            continue
         for n in range(2, most + 1):
             for row in initial_array(n, window, mq):
                 yield q, mq, tuple((int(x), int(y)) for x, y in row)

@@ -211,8 +211,40 @@ def prove(
         if progress:
             progress(task_key(tasks[k]))
 
-    run_fresh(calls, workers, done)
+    def overrun(k: int, seconds: float) -> ProofResult:
+        return overrun_result(tasks[k], seconds, timeout, out)
+
+    run_fresh(calls, workers, done, limit=hard_limit(timeout), overrun=overrun)
     return [r for r in results if r is not None]
+
+
+def hard_limit(timeout: float) -> float:
+    """Wall-clock seconds after which an obligation's process is stopped: twice ``--timeout`` and a
+    minute more. The budget itself is z3's resource count; what it does not count (the linearization's
+    Python, the small swarms, a slow machine) took up to 2.2 times the budget (133 s of a 60 s budget);
+    beyond this, a solver ignores its limits."""
+    return 2 * timeout + 60
+
+
+def overrun_result(task: Task, seconds: float, timeout: float, out: Path | None) -> ProofResult:
+    """INCONCLUSIVE for an obligation whose process :func:`hard_limit` stopped, saying so."""
+    reason = (
+        f"stopped after {seconds:.0f} s of wall clock (the limit for --timeout {timeout:g} is "
+        f"{hard_limit(timeout):.0f} s): the solver did not keep to its budget; rerun with another --timeout "
+        "(its search differs with its budget)"
+    )
+    lemma, rest = task.key.split("/", 1)
+    path = (out / lemma / f"{rest}.smt2").as_posix() if out is not None else ""
+    if isinstance(task, GlobalTask):
+        path = (out / lemma / "global.smt2").as_posix() if out is not None else ""
+        return ProofResult(task.lemma, task.form, "any", Verdict.INCONCLUSIVE, 0, False, seconds, reason, path)
+    if isinstance(task, LegSpec):
+        rule, case, other = "any", task.name, task.other
+    else:
+        rule, case, other = task.mine[0].rule.value, task.name, task.other_name
+    return ProofResult(
+        task.lemma, task.form, rule, Verdict.INCONCLUSIVE, 0, True, seconds, reason, path, case=case, other=other
+    )
 
 
 def witness_path(model: Model, directory: Path, key: str) -> Path:

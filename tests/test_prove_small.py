@@ -88,3 +88,16 @@ def test_the_enumerated_lattices_are_within_one_obligation_s_means(q, robots, wi
 
     model = load_model("paper").with_q(q)
     assert sum(len(initial_array(n, window, model)) for n in range(2, robots + 1)) < 50_000
+
+
+def test_a_lattice_the_model_cannot_be_put_on_is_left_out():
+    """rad_v = 7/2 is whole at q = 2 only: the enumeration skips q = 1 instead of failing."""
+    from dataclasses import replace
+    from fractions import Fraction
+
+    from fatline_verify.config import Parameters
+
+    model = load_model("paper")
+    model = replace(model, parameters=Parameters(rad_v=Fraction(7, 2), q=2, delta=Fraction(21, 10)))
+    task = _task(model, "rma-fixed/seen-scenario-1")
+    assert small_swarm_counterexample(model, task) is None

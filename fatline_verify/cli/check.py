@@ -6,7 +6,7 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from ..config import Model, parse_robots, parse_window
+from ..config import parse_robots, parse_window
 from ..errors import InvalidInput
 from ..outputs import Kind, claim_dir, claim_file, claim_files, write_json
 from ..progress import Progress
@@ -31,11 +31,6 @@ MAX_Q = 1000
 MAX_STATES_LIMIT = 10**10
 
 
-def with_q(model: Model, q: int) -> Model:
-    """The model on a lattice of ``q`` points per radius (``async_steps`` and the rest kept)."""
-    return model.with_q(q)
-
-
 def stage_callback(bar: Progress) -> Any:
     """The engine's ``progress(label, done, total, note)`` as stages of ``bar``."""
 
@@ -55,7 +50,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     robots = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else None
     window = parse_window(args.window, error=InvalidInput) if args.window is not None else None
     if args.q is not None:
-        model = with_q(model, args.q)
+        model = model.with_q(args.q)
     traces_dir = claim_dir(args.traces, name="traces")
     json_path = claim_file(args.json, name="json", kind=Kind.CHECK, force=args.force) if args.json else None
     bound = parse_window(args.bound, error=InvalidInput, name="bound") if args.bound is not None else None

@@ -11,7 +11,7 @@ from ..errors import InvalidInput
 from ..outputs import child, claim_dir
 from ..properties import CHECKED, Lemma
 from ..systems.base import ENGINES
-from .check import MAX_Q, with_q
+from .check import MAX_Q
 from .common import (
     EXIT_FOUND,
     EXIT_INCONCLUSIVE,
@@ -38,7 +38,7 @@ def cmd_sweep(args: argparse.Namespace) -> int:
 
     model = model_arg(args.model)
     if args.q is not None:
-        model = with_q(model, args.q)
+        model = model.with_q(args.q)
     vary = parse_vary(args.vary, model)
     lemmas = parse_lemmas(args.lemma)
     robots = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else DEFAULT_ROBOTS
