@@ -41,9 +41,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from .config import Model
+from .numbers import Point
 from .properties import Verdict
 from .prove_replay import Known, Replayed, replay, replay_known
-from .prove_small import SMALL_TEXT
+from .prove_small import SMALL_TEXT, given_counterexample
 from .prove_tasks import ProofResult
 from .smt.claims import (
     TWO_MOVERS,
@@ -82,6 +83,10 @@ GROWTH = 4
 
 MIN_CHECK = 0.01
 """Seconds below which a check is not started."""
+
+Given = tuple[str, tuple[Point, ...]]
+"""A configuration handed to the prover (``fatline prove --known FILE``): where it came from, and its
+positions in radii."""
 
 MAX_BLOCKED = 4
 """Non-initial lattice placements blocked per lattice before moving on."""
@@ -417,9 +422,12 @@ def prove_spec(
     note: str = "",
     known: Sequence[Known] = (),
     small: bool = True,
+    given: Sequence[Given] = (),
 ) -> ProofResult:
     """Decide one obligation (see the module docstring); write its real-number form under ``out``.
-    ``small=False`` leaves out the small swarms' enumeration (the solver's search alone).
+    ``small=False`` leaves out the small swarms' enumeration (the solver's search alone). ``given``:
+    configurations handed in (``fatline prove --known``), each replayed before any search with every
+    robot tried as r.
 
     The search runs in rounds of growing budget (:func:`rounds`), each round every step that is still
     open (vacuity in the first only), so an easy answer costs a small round and a hard one gets most
@@ -448,6 +456,12 @@ def prove_spec(
             # and if it finds none the verdict keeps this configuration instead of losing it.
             search.non_initial = again
             search.linear_done = True
+    for where, radii in given:
+        hit = given_counterexample(model, spec, radii)
+        if hit is not None:
+            return search.result(
+                Verdict.VIOLATED, _found(hit, f"given with --known {where}", how="replayed first"), hit
+            )
     for budget in rounds(timeout):
         before = search.spent
         found = search.vacuous(budget) or search.lattices(budget)

@@ -71,26 +71,44 @@ def _focuses(spec: Spec, mq: Model, state: tuple[Point, ...], i: int, decisions:
     return sorted(hit)
 
 
+def in_state(model: Model, spec: Spec, at: Model, state: tuple[Point, ...]) -> Replayed | None:
+    """A counterexample of ``spec`` in ``state`` (lattice units of ``at``, the same model on its own
+    lattice): the first robot, as r, that decides ``spec``'s case and breaks its claim from an initial
+    configuration, replayed under ``model``; ``None`` if none does."""
+    q = at.parameters.q
+    decisions = decide_all(state, at)
+    for i, decision in decisions.items():
+        if case_of(decision, at) not in spec.mine:
+            continue
+        r = state[i]
+        rel = {j: (Fraction(p[0] - r[0]) / q, Fraction(p[1] - r[1]) / q) for j, p in enumerate(state) if j != i}
+        for j in _focuses(spec, at, state, i, decisions):
+            focus = "" if j < 0 else "s" if spec.form == TWO_MOVERS else "o"
+            positions = {"r": (Fraction(0), Fraction(0)), **{f"x{k}": p for k, p in rel.items() if k != j}}
+            if j >= 0:
+                positions[focus] = rel[j]
+            got = replay(model, spec, positions, focus)
+            if isinstance(got, Replayed) and got.initial:
+                return got
+    return None
+
+
 def small_swarm_counterexample(model: Model, spec: Spec) -> tuple[Replayed, int] | None:
     """The first configuration of :data:`SMALL` (in enumeration order) in which some robot, as r,
     decides ``spec``'s case and breaks its claim from an initial configuration, replayed under
     ``model``; with the lattice it was found on. ``None`` if there is none."""
     for q, mq, state in _swarms(model):
-        decisions = decide_all(state, mq)
-        for i, decision in decisions.items():
-            if case_of(decision, mq) not in spec.mine:
-                continue
-            r = state[i]
-            rel = {j: (Fraction(p[0] - r[0], q), Fraction(p[1] - r[1], q)) for j, p in enumerate(state) if j != i}
-            for j in _focuses(spec, mq, state, i, decisions):
-                focus = "" if j < 0 else "s" if spec.form == TWO_MOVERS else "o"
-                positions = {"r": (Fraction(0), Fraction(0)), **{f"x{k}": p for k, p in rel.items() if k != j}}
-                if j >= 0:
-                    positions[focus] = rel[j]
-                got = replay(model, spec, positions, focus)
-                if isinstance(got, Replayed) and got.initial:
-                    return got, q
+        got = in_state(model, spec, mq, state)
+        if got is not None:
+            return got, q
     return None
 
 
-__all__ = ["SMALL", "SMALL_TEXT", "small_swarm_counterexample"]
+def given_counterexample(model: Model, spec: Spec, radii: tuple[Point, ...]) -> Replayed | None:
+    """A configuration given by hand (``fatline prove --known``: a trace's initial positions, in radii),
+    every robot tried as r, as :func:`in_state` does."""
+    state = tuple(model.to_lattice(p) for p in radii)
+    return in_state(model, spec, model, state)
+
+
+__all__ = ["SMALL", "SMALL_TEXT", "given_counterexample", "in_state", "small_swarm_counterexample"]

@@ -20,7 +20,7 @@ from __future__ import annotations
 import os
 import re
 import time
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -29,7 +29,7 @@ from .config import Model
 from .fresh import isolated, run_fresh
 from .properties import Lemma, Verdict
 from .prove_replay import Known, Replayed, replay, replay_known
-from .prove_search import MIN_CHECK, Budget, prove_spec, rounds, rounds_text
+from .prove_search import MIN_CHECK, Budget, Given, prove_spec, rounds, rounds_text
 from .prove_tasks import (
     DEFAULT_SLOTS,
     DEFAULT_TIMEOUT,
@@ -172,6 +172,7 @@ def prove(
     on_result: Callable[[ProofResult], None] | None = None,
     traces: Path | None = None,
     earlier: Mapping[str, dict[str, Any]] | None = None,
+    given: Sequence[Given] = (),
 ) -> list[ProofResult]:
     """Every obligation of ``lemmas`` (or exactly ``tasks``) for ``model``; ``.smt2`` files under ``out``.
 
@@ -181,7 +182,8 @@ def prove(
     ``traces``: where earlier runs wrote their counterexamples (default ``out/traces``); an
     obligation's own is replayed before any search, so a counterexample once found stays found;
     ``earlier``: an earlier run's results rows by obligation key, whose replayed configurations (the
-    claims without a trace: ``closer``, ``seen``, ``x-nondecreasing``) are replayed first likewise.
+    claims without a trace: ``closer``, ``seen``, ``x-nondecreasing``) are replayed first likewise;
+    ``given``: configurations handed in (``--known``), replayed against every per-case obligation.
     """
     tasks = tasks_for(model, lemmas) if tasks is None else tasks
     if not tasks:
@@ -198,7 +200,7 @@ def prove(
             note = PAPER_PART_NOTE if model.options.repaired else ""
             written = traces if traces is not None else out / "traces" if out else None
             known = _known_all(model, task.key, written, out, earlier)
-            kwargs = {"timeout": timeout, "out": out, "note": note, "known": known}
+            kwargs = {"timeout": timeout, "out": out, "note": note, "known": known, "given": tuple(given)}
             calls.append((prove_spec, (paper_part(model), task), kwargs))
         else:
             calls.append((prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out}))

@@ -4,6 +4,8 @@ the executable model alone."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from fatline_verify.cases import case_of
@@ -101,3 +103,46 @@ def test_a_lattice_the_model_cannot_be_put_on_is_left_out():
     model = replace(model, parameters=Parameters(rad_v=Fraction(7, 2), q=2, delta=Fraction(21, 10)))
     task = _task(model, "rma-fixed/seen-scenario-1")
     assert small_swarm_counterexample(model, task) is None
+
+
+KNOWN = Path(__file__).resolve().parent.parent / "docs" / "known"
+
+
+def test_every_hand_built_counterexample_replays():
+    from fatline_verify.trace import load_trace
+
+    files = sorted(KNOWN.glob("*.json"))
+    assert len(files) == 3
+    for path in files:
+        run = check_replay(load_trace(path))
+        assert run.rounds and any(v.lemma.value == "no-collision" for v in run.rounds[-1].violations), path
+
+
+def test_known_traces_decide_the_obligations_they_break_and_only_those(tmp_path, capsys):
+    """``fatline prove --known``: each hand-built trace decides its own case; a trace that breaks no
+    open obligation changes nothing."""
+    import json
+    import shutil
+
+    from fatline_verify.cli import main
+
+    out = tmp_path / "proofs"
+    shutil.copytree(KNOWN.parent.parent / "proofs" / "paper-drop-touch", out / "paper-drop-touch")
+    results = out / "paper-drop-touch" / "results.json"
+    data = json.loads(results.read_text())
+    open_cases = ("scenario-4-I-nonempty.from-scenario-3", "scenario-4-I-nonempty.from-uncovered-both")
+    for row in data["obligations"]:  # whatever the committed rows say, these two are open here
+        if row["lemma"] == "no-collision" and row["form"] == "one-mover" and row["case"] in open_cases:
+            row["verdict"] = "INCONCLUSIVE"
+    results.write_text(json.dumps(data))
+    before = {r["case"]: r for r in data["obligations"] if r["lemma"] == "no-collision"}
+    known = [str(p) for p in sorted(KNOWN.glob("*.json"))]
+    code = main(["prove", "paper-drop-touch", "--redo-inconclusive", "--known", *known, "--out", str(out), "-q"])
+    assert code == 1
+    rows = {r["case"]: r for r in json.loads(results.read_text())["obligations"] if r["lemma"] == "no-collision"}
+    for case in open_cases:
+        assert rows[case]["verdict"] == "VIOLATED" and "given with --known" in rows[case]["reason"], rows[case]
+        assert rows[case]["form"] == "one-mover"
+    for case, row in rows.items():  # the after-Scenario-2 trace breaks a row already decided: kept as it was
+        if case not in open_cases:
+            assert row == before[case], case

@@ -10,6 +10,7 @@ from ..outputs import Kind, child, claim_dir, claim_file, claim_files, write_jso
 from ..progress import Progress
 from ..properties import Lemma
 from ..text import prove_lines
+from ..trace import initial_radii, load_trace
 from .common import (
     EXIT_FOUND,
     EXIT_INCONCLUSIVE,
@@ -42,6 +43,7 @@ def cmd_prove(args: argparse.Namespace) -> int:
     from ..prover import LEMMAS, prove, task_key, tasks_for
 
     model = model_arg(args.model)
+    given = [(name, initial_radii(load_trace(name))) for name in args.known]  # a bad file: exit 2, before any work
     lemmas = LEMMAS if args.lemma == ALL else (Lemma(args.lemma),)
     tasks = tasks_for(
         model, lemmas, two_movers=args.two_movers
@@ -71,6 +73,7 @@ def cmd_prove(args: argparse.Namespace) -> int:
                 progress=bar.step,
                 traces=traces_dir,
                 earlier=store.rows,
+                given=given,
             )
         except KeyboardInterrupt:
             interrupted = True
@@ -135,6 +138,16 @@ def register(sub: Any) -> None:
         action="store_true",
         help="only the obligations whose row in OUT/MODEL/results.json is INCONCLUSIVE or missing; every other "
         "row is kept as it is (its fingerprint still says which settings and encoding produced it)",
+    )
+    p.add_argument(
+        "--known",
+        nargs="+",
+        action="extend",
+        default=[],
+        metavar="TRACE",
+        help="counterexamples found elsewhere (by hand: fatline simulate --trace): each trace's initial "
+        "configuration is replayed against every obligation before any search, every robot tried as r; one "
+        "that decides the case and breaks the claim is VIOLATED, its source named",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="no progress")
     add_force(p)
