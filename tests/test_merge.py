@@ -32,6 +32,7 @@ def _fake_prove(verdict: Verdict):
         on_result=None,
         traces=None,
         earlier=None,
+        given=(),
     ):
         tasks = prover.tasks_for(model, lemmas) if tasks is None else tasks
         results = []
