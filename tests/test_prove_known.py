@@ -119,8 +119,8 @@ def test_an_earlier_non_initial_violation_is_kept_when_no_initial_one_is_found()
     from fatline_verify.trace import load_trace
 
     key = "no-collision/one-mover-scenario-4-I-nonempty.from-uncovered-both"
-    root = Path(__file__).resolve().parent.parent / "proofs" / "paper-drop-touch" / "traces"
-    doc = load_trace(root / f"paper-drop-touch-prove-{key.replace('/', '-')}.json")
+    # the row's own trace while it was INCONCLUSIVE (proofs/ now holds an initial counterexample)
+    doc = load_trace(Path(__file__).parent / "fixtures" / "prove" / "paper-drop-touch-non-initial-uncovered-both.json")
     model = load_model("paper-drop-touch")
     task = _task(model, key)
     assert replay_known(model, task, doc) is None  # not initial: it decides nothing on its own
