@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import Any
 
 import pytest
 
@@ -13,6 +14,13 @@ from fatline_verify.options import Options
 def make_model(rad_v: int | Fraction = 4, q: int = 1, **readings: str) -> Model:
     """The default model with ``rad_v``/``q`` and some readings changed."""
     return Model(name="test", options=Options().with_(**readings), parameters=Parameters(rad_v=rad_v, q=q))
+
+
+def task_named(model: Model, key: str) -> Any:
+    """The prover's obligation of ``model`` named ``key`` (``lemma/form-case[.and.other]``)."""
+    from fatline_verify.prover import tasks_for
+
+    return next(t for t in tasks_for(model) if t.key == key)
 
 
 @pytest.fixture

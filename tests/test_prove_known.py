@@ -16,21 +16,17 @@ from fatline_verify.prover import (
     _known_configuration,
     mirror_key,
     reflect,
-    tasks_for,
 )
+from tests.conftest import task_named
 
 # paper, closer, scenario 2 down-1: r moves to (73/30, -1) and is not closer to (73/30, 31/10) in B
 CONFIGURATION = ["0,0", "73/30,1", "73/30,31/10"]
 KEY = "connectivity/closer-scenario-2.down-1"
 
 
-def _task(model, key):
-    return next(t for t in tasks_for(model) if t.key == key)
-
-
 def test_a_stored_configuration_is_replayed_first_and_decides():
     model = load_model("paper")
-    task = _task(model, KEY)
+    task = task_named(model, KEY)
     rows = {KEY: {"verdict": "VIOLATED", "configuration": CONFIGURATION}}
     known = _known_configuration(task.key, rows)
     assert known == {"configuration": CONFIGURATION}
@@ -42,13 +38,13 @@ def test_a_stored_configuration_is_replayed_first_and_decides():
 
 def test_a_stored_configuration_that_no_longer_breaks_the_claim_is_searched_past():
     model = load_model("paper")
-    task = _task(model, KEY)
+    task = task_named(model, KEY)
     assert _known_configuration(task.key, {KEY: {"verdict": "PROVED", "configuration": CONFIGURATION}}) is None
     assert _known_configuration(task.key, {KEY: {"verdict": "VIOLATED", "configuration": []}}) is None
     moved = ["0,0", "73/30,1", "73/30,5"]  # the robot of B out of view: r decides otherwise, or the claim holds
     assert replay_known(model, task, {"configuration": moved}) is None
     assert replay_known(model, task, {"configuration": ["0,0", "x,1"]}) is None
-    other = _task(model, "connectivity/closer-scenario-3.up-1")  # another case: r's decision differs
+    other = task_named(model, "connectivity/closer-scenario-3.up-1")  # another case: r's decision differs
     assert replay_known(model, other, {"configuration": CONFIGURATION}) is None
 
 
@@ -81,7 +77,7 @@ def test_a_counterexample_found_under_a_model_beside_is_replayed_first(tmp_path)
         / "paper-uncovered-stay-prove-no-collision-one-mover-scenario-2.up-2-after-down.json"
     )
     model = load_model("paper")
-    task = _task(model, UP_2)
+    task = task_named(model, UP_2)
     out = _beside(tmp_path, "paper-uncovered-stay", UP_2, doc)
     known = _known_beside(task.key, out)
     assert [where for where, _ in known] == ["a counterexample found under model paper-uncovered-stay"]
@@ -100,7 +96,7 @@ def test_a_counterexample_beside_that_does_not_replay_here_is_searched_past(tmp_
     root = Path(__file__).resolve().parent.parent / "proofs"
     doc = load_trace(root / "paper" / "traces" / "paper-prove-no-collision-one-mover-scenario-1.json")
     model = load_model("paper")
-    task = _task(model, UP_2)
+    task = task_named(model, UP_2)
     out = _beside(tmp_path, "paper-centralized", UP_2, doc)  # filed under UP_2, but a Scenario 1 trace
     known = _known_beside(task.key, out)
     assert len(known) == 1
@@ -122,7 +118,7 @@ def test_an_earlier_non_initial_violation_is_kept_when_no_initial_one_is_found()
     # the row's own trace while it was INCONCLUSIVE (proofs/ now holds an initial counterexample)
     doc = load_trace(Path(__file__).parent / "fixtures" / "prove" / "paper-drop-touch-non-initial-uncovered-both.json")
     model = load_model("paper-drop-touch")
-    task = _task(model, key)
+    task = task_named(model, key)
     assert replay_known(model, task, doc) is None  # not initial: it decides nothing on its own
     got = replay_known(model, task, doc, initial=False)
     assert got is not None and not got.initial and got.problems
@@ -163,7 +159,7 @@ def test_the_reflected_counterexample_of_the_mirror_case_decides_this_one(tmp_pa
 
     model = load_model("paper")
     key = "connectivity/one-mover-scenario-2.up-3-after-down"
-    task = _task(model, key)
+    task = task_named(model, key)
     root = Path(__file__).resolve().parent.parent / "proofs" / "paper" / "traces"
     theirs = load_trace(root / "paper-prove-connectivity-one-mover-scenario-3.down-3-after-up.json")
     assert replay_known(model, task, theirs) is None

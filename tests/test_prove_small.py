@@ -16,6 +16,7 @@ from fatline_verify.prove_small import SMALL, small_swarm_counterexample
 from fatline_verify.prover import tasks_for
 from fatline_verify.schedule import decide_all, play_round
 from fatline_verify.trace import check_replay
+from tests.conftest import task_named
 
 # paper-drop-touch: Scenario 2's search fails both ways, I's top robot is also in C less than 2 below
 # r, so "y_p = -d + 2" moves r *up*, into a robot of A (the solver's search of 13 named robots found
@@ -23,13 +24,9 @@ from fatline_verify.trace import check_replay
 DROP_UP = "no-collision/one-mover-scenario-4-I-nonempty.from-scenario-2"
 
 
-def _task(model, key):
-    return next(t for t in tasks_for(model) if t.key == key)
-
-
 def test_small_swarms_find_the_drop_that_goes_up():
     model = load_model("paper-drop-touch")
-    task = _task(model, DROP_UP)
+    task = task_named(model, DROP_UP)
     found = small_swarm_counterexample(model, task)
     assert found is not None
     got, q = found
@@ -49,10 +46,10 @@ def test_a_case_the_prover_proves_has_no_small_swarm_counterexample():
     where it refutes one, here Scenario 1's collision with a robot r cannot see, it finds one too)."""
     model = load_model("paper")
     for key in ("connectivity/closer-scenario-1", "rma-fixed/seen-scenario-1", "approach/x-nondecreasing-scenario-1"):
-        task = _task(model, key)
+        task = task_named(model, key)
         assert small_swarm_counterexample(model, task) is None, key
         assert prove_spec(model, task, timeout=20, out=None, small=False).verdict is Verdict.PROVED, key
-    found = small_swarm_counterexample(model, _task(model, "no-collision/one-mover-scenario-1"))
+    found = small_swarm_counterexample(model, task_named(model, "no-collision/one-mover-scenario-1"))
     assert found is not None and found[0].what == "collision"
 
 
@@ -76,7 +73,7 @@ def test_no_proved_row_of_the_shipped_proofs_has_a_small_swarm_counterexample(na
 def test_the_prover_asks_the_small_swarms_after_its_first_round():
     """With one round too small for the solver, the enumeration decides and says where it looked."""
     model = load_model("paper-drop-touch")
-    task = _task(model, DROP_UP)
+    task = task_named(model, DROP_UP)
     result = prove_spec(model, task, timeout=0.5, out=None)
     assert result.verdict is Verdict.VIOLATED and "small swarms enumerated, lattice q=2" in result.reason
     alone = prove_spec(model, task, timeout=0.5, out=None, small=False)
@@ -101,7 +98,7 @@ def test_a_lattice_the_model_cannot_be_put_on_is_left_out():
 
     model = load_model("paper")
     model = replace(model, parameters=Parameters(rad_v=Fraction(7, 2), q=2, delta=Fraction(21, 10)))
-    task = _task(model, "rma-fixed/seen-scenario-1")
+    task = task_named(model, "rma-fixed/seen-scenario-1")
     assert small_swarm_counterexample(model, task) is None
 
 

@@ -16,7 +16,7 @@ from fatline_verify.properties import Verdict
 from fatline_verify.prover import isolated, prove_global, prove_spec, tasks_for
 from fatline_verify.smt.obligations import evaluate, recheck_file
 from fatline_verify.trace import check_replay
-from tests.conftest import make_model
+from tests.conftest import make_model, task_named
 from tests.test_properties import readings
 
 coord = st.one_of(
@@ -47,11 +47,6 @@ def test_encoding_agrees_with_decide(snapshot, opts):
     assert dest == tuple(Fr(v) for v in expected.destination)
 
 
-def _spec(model, key):
-    """The obligation of ``model`` named ``key`` (``lemma/form-case[.and.other]``)."""
-    return next(t for t in tasks_for(model) if t.key == key)
-
-
 def _cvc5(path):
     """cvc5's answer to a written file (its own parser: the file alone is the obligation)."""
     cvc5 = pytest.importorskip("cvc5")
@@ -74,7 +69,7 @@ def _cvc5(path):
 def test_a_proved_obligation_stays_unsat_from_its_file_for_both_solvers(tmp_path):
     # No rule moves r right of every robot it sees, in Scenario 1, for swarms of any size.
     model = make_model()
-    result = isolated(prove_spec, model, _spec(model, "rma-fixed/seen-scenario-1"), timeout=20, out=tmp_path)
+    result = isolated(prove_spec, model, task_named(model, "rma-fixed/seen-scenario-1"), timeout=20, out=tmp_path)
     assert result.verdict is Verdict.PROVED and result.any_size
     path = tmp_path / "rma-fixed" / "seen-scenario-1.smt2"
     assert "Why unsat covers swarms of every size" in path.read_text()
@@ -85,7 +80,7 @@ def test_a_proved_obligation_stays_unsat_from_its_file_for_both_solvers(tmp_path
 def test_the_paper_s_hidden_robot_scenario_1_collision_is_found_and_replays():
     # r moves to the foot of psi_right; a robot r cannot see ends closer than 2 to r's destination.
     model = make_model()
-    result = isolated(prove_spec, model, _spec(model, "no-collision/one-mover-scenario-1"), timeout=20, out=None)
+    result = isolated(prove_spec, model, task_named(model, "no-collision/one-mover-scenario-1"), timeout=20, out=None)
     assert result.verdict is Verdict.VIOLATED
     doc = json.loads(json.dumps(result.witness))
     check_replay(doc, model)
@@ -97,7 +92,7 @@ def test_the_paper_s_scenario_4_drop_collides_and_the_witness_replays():
     # "y_p = 0 - d + 1": r stops one radius above the top robot of I. A defect of the paper itself.
     model = make_model()
     key = "no-collision/one-mover-scenario-4-I-nonempty.from-uncovered-neither"
-    result = isolated(prove_spec, model, _spec(model, key), timeout=20, out=None)
+    result = isolated(prove_spec, model, task_named(model, key), timeout=20, out=None)
     assert result.verdict is Verdict.VIOLATED
     doc = json.loads(json.dumps(result.witness))
     check_replay(doc, model)
@@ -109,7 +104,7 @@ def test_a_case_that_never_fires_is_proved_vacuously(tmp_path):
     # Candidate 4 within view (rad_v = 4) needs x_psi = 0, which no B u C u D robot gives.
     model = make_model()
     result = isolated(
-        prove_spec, model, _spec(model, "no-collision/one-mover-scenario-2.down-4"), timeout=10, out=tmp_path
+        prove_spec, model, task_named(model, "no-collision/one-mover-scenario-2.down-4"), timeout=10, out=tmp_path
     )
     assert result.verdict is Verdict.PROVED
     assert "never fires" in result.reason
@@ -133,7 +128,7 @@ def test_seeded_unsafe_reading_is_refuted_with_a_replayed_trace():
     # touching the top robot of I. The prover must find that, from an initial configuration.
     model = make_model(contact="strict", scenario4_drop="touch")
     key = "no-collision/one-mover-scenario-4-I-nonempty.from-uncovered-neither"
-    result = isolated(prove_spec, model, _spec(model, key), timeout=20, out=None)
+    result = isolated(prove_spec, model, task_named(model, key), timeout=20, out=None)
     assert result.verdict is Verdict.VIOLATED
     doc = json.loads(json.dumps(result.witness))
     check_replay(doc, model)
@@ -146,7 +141,9 @@ def test_a_claim_counterexample_is_a_configuration_decide_replays():
     from fatline_verify.cases import case_of
 
     model = make_model()
-    result = isolated(prove_spec, model, _spec(model, "connectivity/closer-scenario-2.down-1"), timeout=20, out=None)
+    result = isolated(
+        prove_spec, model, task_named(model, "connectivity/closer-scenario-2.down-1"), timeout=20, out=None
+    )
     assert result.verdict is Verdict.VIOLATED
     state = [tuple(Fr(v) for v in p.split(",")) for p in result.configuration]
     assert state[0] == (0, 0)
@@ -205,7 +202,7 @@ def test_forms_follow_the_scheduler():
 def test_fsync_one_mover_replays_with_every_enabled_robot_moving():
     model = make_model(scheduler="fsync")
     result = isolated(
-        prove_spec, model, _spec(model, "no-collision/one-mover-scenario-1.and.o-stays"), timeout=10, out=None
+        prove_spec, model, task_named(model, "no-collision/one-mover-scenario-1.and.o-stays"), timeout=10, out=None
     )
     assert result.verdict is Verdict.VIOLATED
     doc = json.loads(json.dumps(result.witness))
@@ -348,7 +345,7 @@ def test_a_counterexample_beyond_the_first_round_is_found_in_a_later_one():
     """Scenario 2, up-1 after down (paper): no initial lost edge within the first round's 2 s, one
     later (the linearization finds a violation that is not initial, then an initial one)."""
     model = make_model()
-    spec = _spec(model, "connectivity/one-mover-scenario-2.up-1-after-down")
+    spec = task_named(model, "connectivity/one-mover-scenario-2.up-1-after-down")
     first = isolated(prove_spec, model, spec, timeout=2, out=None, small=False)  # the solver's search alone
     later = isolated(prove_spec, model, spec, timeout=20, out=None, small=False)
     assert first.verdict is Verdict.INCONCLUSIVE
@@ -362,7 +359,7 @@ def test_a_verdict_near_the_budget_is_the_same_on_every_run():
     budget answers with the same verdict and the same reason (its rlimit figures included) twice,
     even with the machine busy in between."""
     model = make_model()
-    spec = _spec(model, "no-collision/one-mover-scenario-2.up-2-after-down")
+    spec = task_named(model, "no-collision/one-mover-scenario-2.up-2-after-down")
     first = isolated(prove_spec, model, spec, timeout=3, out=None, small=False)
     busy = sum(i * i for i in range(2_000_000))  # load between the runs
     second = isolated(prove_spec, model, spec, timeout=3, out=None, small=False)
@@ -378,17 +375,17 @@ def test_an_earlier_counterexample_is_replayed_before_any_search():
     model = make_model()
     root = Path(__file__).resolve().parent.parent / "proofs" / "paper" / "traces"
     own = load_trace(root / "paper-prove-no-collision-one-mover-scenario-1.json")
-    spec = _spec(model, "no-collision/one-mover-scenario-1")
+    spec = task_named(model, "no-collision/one-mover-scenario-1")
     got = prove_spec(model, spec, timeout=0.05, out=None, known=[("an earlier run's counterexample", own)])
     assert got.verdict is Verdict.VIOLATED and "replayed first" in got.reason and got.witness is not None
     check_replay(got.witness, model)
-    other = _spec(model, "connectivity/one-mover-scenario-1")
+    other = task_named(model, "connectivity/one-mover-scenario-1")
     missed = prove_spec(model, other, timeout=0.05, out=None, known=[("an earlier run's counterexample", own)])
     assert "replayed first" not in missed.reason
     fine = make_model(q=2)  # a trace stores radii, whatever the lattice of either model
     again = prove_spec(
         fine,
-        _spec(fine, "no-collision/one-mover-scenario-1"),
+        task_named(fine, "no-collision/one-mover-scenario-1"),
         timeout=0.05,
         out=None,
         known=[("an earlier run's counterexample", own)],
@@ -407,7 +404,7 @@ def test_the_linear_relaxation_keeps_every_solution_and_nothing_nonlinear():
     from fatline_verify.smt.solving import _nonlinear, check, relaxation, solver_for
 
     model = make_model()
-    spec = _spec(model, "no-collision/one-mover-scenario-1")
+    spec = task_named(model, "no-collision/one-mover-scenario-1")
     full = build(Arith(None), model, spec)
     relaxed = relaxation(full)
     memo: dict[int, bool] = {}
@@ -429,7 +426,7 @@ def test_a_case_that_never_fires_is_proved_by_its_linear_relaxation_at_once():
     see it within 60 s (its blockers), the relaxation sees it with a budget of a tenth of a second."""
     model = load_model("paper-literal")
     for key in ("approach/x-nondecreasing-scenario-3.up-4", "connectivity/closer-scenario-3.up-7"):
-        result = isolated(prove_spec, model, _spec(model, key), timeout=0.5, out=None)
+        result = isolated(prove_spec, model, task_named(model, key), timeout=0.5, out=None)
         assert result.verdict is Verdict.PROVED and "linear relaxation" in result.reason, (key, result.reason)
     assert _scenario_3_snapshots(model) == []
     assert _scenario_3_snapshots(make_model())  # the same grid meets Scenario 3 under the default quadrants
