@@ -44,7 +44,7 @@ from .config import Model
 from .numbers import Point
 from .properties import Verdict
 from .prove_replay import Known, Replayed, replay, replay_known
-from .prove_small import SMALL_TEXT, given_counterexample
+from .prove_small import SMALL_TEXT, given_counterexample, small_swarm_counterexample
 from .prove_tasks import ProofResult
 from .smt.claims import (
     TWO_MOVERS,
@@ -230,8 +230,6 @@ class _Search(Budget):
         first configuration whose r decides this case and breaks the claim from an initial configuration
         (replayed). No solver is asked, so no budget is spent; its seconds are counted."""
         import time
-
-        from .prove_small import small_swarm_counterexample
 
         if self.small_done:
             return None

@@ -236,9 +236,9 @@ def overrun_result(task: Task, seconds: float, timeout: float, out: Path | None)
         "(its search differs with its budget)"
     )
     lemma, rest = task.key.split("/", 1)
-    path = (out / lemma / f"{rest}.smt2").as_posix() if out is not None else ""
+    name = "global.smt2" if isinstance(task, GlobalTask) else f"{rest}.smt2"  # as each form writes it
+    path = (out / lemma / name).as_posix() if out is not None else ""
     if isinstance(task, GlobalTask):
-        path = (out / lemma / "global.smt2").as_posix() if out is not None else ""
         return ProofResult(task.lemma, task.form, "any", Verdict.INCONCLUSIVE, 0, False, seconds, reason, path)
     if isinstance(task, LegSpec):
         rule, case, other = "any", task.name, task.other
