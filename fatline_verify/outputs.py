@@ -40,6 +40,7 @@ class Kind(StrEnum):
     CHECK = "fatline-check"
     PROVE = "fatline-prove"
     SWEEP = "fatline-sweep"
+    REACH = "fatline-reach"
     PAGE = "fatline-page"
     """Report pages, assets and pictures (text files carrying :data:`TEXT_MARKER`)."""
 
@@ -49,6 +50,7 @@ class Kind(StrEnum):
             Kind.CHECK: "a fatline check result",
             Kind.PROVE: "a fatline prove result",
             Kind.SWEEP: "a fatline sweep",
+            Kind.REACH: "a fatline reach result",
             Kind.PAGE: "a page fatline report wrote",
         }[self]
 

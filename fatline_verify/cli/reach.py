@@ -1,0 +1,107 @@
+"""``fatline reach``: whether *any* rule set of the repaired family could bring each small swarm to a line."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from ..config import parse_robots, parse_window
+from ..errors import InvalidInput
+from ..outputs import Kind, claim_file, write_json
+from ..progress import Progress
+from .common import (
+    EXIT_FOUND,
+    EXIT_INTERRUPTED,
+    EXIT_OK,
+    add_command,
+    add_force,
+    add_model_argument,
+    emit,
+    integer,
+    model_arg,
+    nonempty,
+)
+
+MAX_Q = 8
+"""The search is in Python and every state of every initial configuration is kept: finer lattices
+than this are out of reach of one machine at the robot counts that matter."""
+SHOWN = 10
+"""Stuck configurations listed per robot count (``--json`` has them all)."""
+
+
+def _kinds(text: str | None) -> frozenset[Any]:
+    from ..reach import PROVED, WHAT_IF, Kind
+
+    if text is None:
+        return PROVED
+    names = [t.strip() for t in text.split(",")]
+    allowed = [k.value for k in WHAT_IF]
+    bad = [t for t in names if t not in allowed]
+    if bad or not names:
+        raise InvalidInput(f"with={text!r}: expected what-if leg kinds from {', '.join(allowed)}, comma-separated")
+    return PROVED | frozenset(Kind(t) for t in names)
+
+
+def cmd_reach(args: argparse.Namespace) -> int:
+    from ..reach import reach, refuse
+    from ..reach_text import reach_lines, reach_to_json
+
+    model = model_arg(args.model)
+    kinds = _kinds(args.with_)
+    if args.q is not None:
+        model = model.with_q(args.q)
+    refuse(model)
+    lo, hi = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else model.bounds.robots
+    window = parse_window(args.window, error=InvalidInput) if args.window is not None else model.bounds.window
+    json_path = claim_file(args.json, name="json", kind=Kind.REACH, force=args.force) if args.json else None
+
+    results = []
+    interrupted = False
+    with Progress(enabled=not args.quiet, unit="robot counts") as bar:
+        bar.stage(f"{model.name}: reaching a line", total=hi - lo + 1)
+        try:
+            for n in range(lo, hi + 1):
+                results.append(reach(model, n, window, kinds, witnesses=args.verify))
+                bar.step(f"{n} robots: {len(results[-1].stuck):,} stuck")
+        except KeyboardInterrupt:
+            interrupted = True
+    lines = reach_lines(model, kinds, window, results, shown=SHOWN)
+    if interrupted:
+        done = ", ".join(str(r.n) for r in results) or "none"
+        lines.append(f"INTERRUPTED: robot counts finished: {done}; the rest was not searched")
+    if json_path is not None and results:
+        write_json(json_path, reach_to_json(model, kinds, window, results))
+        lines.append(f"results written to {json_path}")
+    emit(lines)
+    if interrupted:
+        return EXIT_INTERRUPTED
+    return EXIT_FOUND if any(r.stuck for r in results) else EXIT_OK
+
+
+def register(sub: Any) -> None:
+    p = add_command(
+        sub,
+        "reach",
+        "whether any rule set whose moves are the repaired family's legs could bring each small swarm to a line",
+    )
+    add_model_argument(p)
+    p.add_argument("--robots", help="robot count or range, e.g. 3 or 2..4 (default: the model's bounds)")
+    p.add_argument("--window", help="WIDTHxHEIGHT lattice points, e.g. 9x9 (default: the model's bounds)")
+    p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")
+    p.add_argument(
+        "--with",
+        dest="with_",
+        metavar="KINDS",
+        help="also what-if legs no proof covers: left, corner (comma-separated)",
+    )
+    p.add_argument(
+        "--verify",
+        action="store_true",
+        help="also replay a shortest way to a line from every configuration that has one (slower)",
+    )
+    p.add_argument(
+        "--json", type=nonempty("json", "a file name for the JSON results"), help="write the results as JSON"
+    )
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress")
+    add_force(p)
+    p.set_defaults(handler=cmd_reach)

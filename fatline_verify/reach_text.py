@@ -1,0 +1,127 @@
+"""What ``fatline reach`` prints and writes (:mod:`fatline_verify.reach` computes it)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .config import Model, model_to_mapping
+from .numbers import format_number
+from .outputs import Kind as OutputKind
+from .reach import PROVED, Kind, ReachResult, State
+
+
+def _radii(model: Model, state: State) -> str:
+    """A state as ``--init`` text, in radii."""
+    return " ".join(",".join(str(format_number(v)) for v in model.from_lattice(p)) for p in state)
+
+
+def _point_list(model: Model, state: State) -> list[list[str]]:
+    return [[str(format_number(v)) for v in model.from_lattice(p)] for p in state]
+
+
+def _kinds_text(kinds: frozenset[Kind]) -> str:
+    proved = ", ".join(k.value for k in Kind if k in PROVED)
+    extra = [k.value for k in Kind if k in kinds and k not in PROVED]
+    text = f"{proved} (proved safe: fatline_verify/smt/legs.py)"
+    return text + (f" + what-if {', '.join(extra)} (no proof covers them)" if extra else "")
+
+
+def reach_lines(
+    model: Model, kinds: frozenset[Kind], window: tuple[int, int], results: list[ReachResult], *, shown: int
+) -> list[str]:
+    """The table, then the stuck configurations (the first ``shown`` per robot count), then what was
+    checked apart from the search."""
+    w, h = window
+    lines = [
+        f"model {model.describe()}",
+        f"legs: {_kinds_text(kinds)}; any set of unlocked robots, each any of its legs, every round; "
+        f"{w}x{h} window, every initial configuration",
+        "",
+        f"{'robots':>6}  {'initial':>9}  {'line, 1 mover':>13}  {'line, any':>9}  {'stuck':>7}  "
+        f"{'every algorithm':>15}  states",
+    ]
+    for r in results:
+        lines.append(
+            f"{r.n:>6}  {r.initial:>9,}  {r.one_mover:>13,}  {r.reached:>9,}  {len(r.stuck):>7,}  "
+            f"{len(r.universal):>15,}  {r.states[0]:,} + {r.states[1]:,}"
+        )
+    stuck = [r for r in results if r.stuck]
+    if stuck:
+        lines += [
+            "",
+            "STUCK: from these initial configurations no state on one vertical is reachable by any rounds of these "
+            "legs, so no rule set whose moves are these legs (oblivious or not) brings them to a line:",
+        ]
+        for r in stuck:
+            more = f" (first {shown}; --json lists all)" if len(r.stuck) > shown else ""
+            lines.append(f"  {r.n} robots, {len(r.stuck):,} configurations{more}:")
+            q = f" --q {model.parameters.q}" if model.parameters.q != 1 else ""
+            for s in r.stuck[:shown]:
+                lines.append(f'    fatline simulate {model.name}{q} --init "{_radii(model, s)}"')
+    else:
+        lines += ["", "every initial configuration reaches a line by some rounds of these legs"]
+    universal = [r for r in results if r.universal]
+    if universal:
+        lines += [
+            "",
+            "DEADLOCKED FOR EVERY ALGORITHM whose moves are at most one radius and stay on this lattice (whatever "
+            "its lock, rules or legs): each robot sees what it would see alone with the robots it sees (a legal "
+            "swarm), and there every such move of it, it alone active, collides or splits the swarm; so an "
+            "oblivious algorithm that never does either under SSYNC keeps every robot of these still:",
+        ]
+        for r in universal:
+            for s in r.universal[:shown]:
+                lines.append(f"  {r.n} robots: {_radii(model, s)}")
+    if any(k not in PROVED for k in kinds):
+        unsafe = sum(r.unsafe for r in results)
+        lines += [
+            "",
+            f"what-if legs: every round is played by the executable model first; {unsafe:,} would collide or split "
+            "the swarm (counted, not followed)",
+        ]
+    lines.append("")
+    if stuck:
+        confirmed = sum(r.confirmed for r in results)
+        lines.append(
+            f"checked apart from the search: each stuck configuration searched again on its own ({confirmed:,} "
+            "states, no line among them)"
+        )
+    replayed = [r.replayed for r in results if r.replayed is not None]
+    if replayed:
+        lines.append(
+            f"checked apart from the search: a shortest way to a line from every other configuration, replayed by the "
+            f"executable model ({sum(replayed):,} rounds: every leg one of the mover's, no collision, the graph "
+            "connected, the RMA kept)"
+        )
+    lines.append(
+        "Bounds: initial configurations in the window; the rounds are not bounded (the legs keep the swarm connected, "
+        "so finitely many states are reachable up to translation)."
+    )
+    return lines
+
+
+def reach_to_json(
+    model: Model, kinds: frozenset[Kind], window: tuple[int, int], results: list[ReachResult]
+) -> dict[str, Any]:
+    """The results as plain data (``--json``): every stuck configuration in radii."""
+    return {
+        "format": OutputKind.REACH.value,
+        "model": model_to_mapping(model),
+        "legs": sorted(k.value for k in kinds),
+        "window": list(window),
+        "searches": [
+            {
+                "robots": r.n,
+                "initial": r.initial,
+                "line_one_mover": r.one_mover,
+                "line_any_movers": r.reached,
+                "states": list(r.states),
+                "confirmed_states": r.confirmed,
+                "unsafe_rounds": r.unsafe,
+                **({"replayed_rounds": r.replayed} if r.replayed is not None else {}),
+                "stuck": [_point_list(model, s) for s in r.stuck],
+                "deadlocked_for_every_algorithm": [_point_list(model, s) for s in r.universal],
+            }
+            for r in results
+        ],
+    }

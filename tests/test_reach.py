@@ -1,0 +1,207 @@
+"""``fatline reach`` (:mod:`fatline_verify.reach`): which initial configurations no rule set of the repaired
+family can bring to a line, and which it could."""
+
+from __future__ import annotations
+
+import json
+import random
+from collections import deque
+from itertools import combinations
+
+import pytest
+
+from fatline_verify.cli import main
+from fatline_verify.config import load_model
+from fatline_verify.pocket import POCKET
+from fatline_verify.reach import (
+    PROVED,
+    Family,
+    Kind,
+    canonical,
+    confirm_stuck,
+    family_legs,
+    reach,
+    replay_witness,
+    universal_deadlock,
+)
+from fatline_verify.schedule import decide_all, enabled, play_round, snapshot
+from fatline_verify.swarm import is_connected, is_goal
+
+PROGRESS = "bench/repaired-progress.toml"
+
+
+def _random_state(rng: random.Random, n: int, model, span: int):
+    """A connected, collision-free state of ``n`` robots on ``model``'s lattice (rejection sampling)."""
+    while True:
+        pts = {(rng.randrange(span), rng.randrange(span)) for _ in range(n)}
+        state = tuple(sorted(pts))
+        if (
+            len(state) == n
+            and all((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2 >= model.contact2 for a, b in combinations(state, 2))
+            and is_connected(state, model)
+        ):
+            return state
+
+
+@pytest.mark.parametrize("spec", ["repaired", PROGRESS])
+@pytest.mark.parametrize("q", [1, 2])
+def test_every_move_of_the_repaired_rules_is_a_leg_of_the_family(spec, q):
+    """The family holds the shipped rule sets: whatever they decide is one of the mover's legs (so "no
+    rule set of the family" includes them)."""
+    model = load_model(spec).with_q(q)
+    rng = random.Random(q)
+    moves = 0
+    for _ in range(300):
+        state = _random_state(rng, rng.randrange(2, 6), model, 9 * q)
+        for i, d in decide_all(state, model).items():
+            if d.moves:
+                moves += 1
+                legs = {end for end, _ in family_legs(snapshot(state, i, model), model)}
+                assert d.destination in legs, (state, i, d.rule, d.destination, legs)
+    assert moves > 50
+
+
+def test_the_pocket_is_stuck_and_left_legs_free_it():
+    model = load_model("repaired").with_q(2)
+    pocket = canonical(model.to_lattice(p) for p in POCKET.robots)
+    assert confirm_stuck(pocket, model) >= 1
+    with pytest.raises(AssertionError, match="reaches the line"):
+        confirm_stuck(pocket, model, PROVED | {Kind.LEFT})
+
+
+def _rules_reach_a_line(state, model, limit=20_000) -> bool:
+    """Every activation of the model's own rules from ``state`` (breadth first): is a line reachable?"""
+    seen = {canonical(state)}
+    queue = deque([state])
+    while queue:
+        s = queue.popleft()
+        if is_goal(s, model):
+            return True
+        on = enabled(decide_all(s, model))
+        for k in range(1, len(on) + 1):
+            for active in combinations(on, k):
+                nxt = play_round(s, active, model).after
+                c = canonical(nxt)
+                if c not in seen:
+                    seen.add(c)
+                    queue.append(c)
+        assert len(seen) < limit
+    return False
+
+
+def test_stuck_configurations_are_not_brought_to_a_line_by_the_rules_and_every_other_way_replays():
+    """A differential with the executable rules: from each stuck configuration, no activation of the
+    repaired rules (with the detour) reaches a line either; each way to a line found replays."""
+    model = load_model(PROGRESS).with_q(2)
+    result = reach(model, 3, (9, 9), witnesses=True)
+    assert result.stuck and result.replayed and result.reached == len(result.witnesses)
+    assert result.initial == result.reached + len(result.stuck)
+    for s in result.stuck:
+        assert not _rules_reach_a_line(s, model)
+    some = sorted(result.witnesses)[:: max(1, len(result.witnesses) // 50)]
+    assert any(_rules_reach_a_line(s, model) for s in some)
+
+
+def test_a_way_that_breaks_the_rules_is_reported():
+    model = load_model("repaired").with_q(2)
+    result = reach(model, 2, (5, 5), witnesses=True)
+    start, steps = next((s, w) for s, w in sorted(result.witnesses.items()) if w)
+    at, moves = steps[0]
+    (i, end), *_ = moves
+    twisted = [(at, ((i, (-end[0] - 1, end[1])),)), *steps[1:]]
+    assert any("has no leg to" in p for p in replay_witness(start, twisted, model))
+    assert any("starts from" in p for p in replay_witness(start, steps[1:], model)) or not steps[1:]
+
+
+def test_the_safety_check_of_what_if_rounds_catches_a_collision():
+    model = load_model("repaired")
+    family = Family(model, PROVED | {Kind.LEFT})
+    state = ((0, 0), (3, 0))
+    assert family.safe(state, ((0, (1, 0)),))
+    assert not family.safe(state, ((0, (1, 0)), (1, (-1, 0))))
+
+
+def test_cli_reports_stuck_configurations_and_writes_json(tmp_path, capsys):
+    out = tmp_path / "reach.json"
+    code = main(["reach", "repaired", "--q", "2", "--robots", "2..3", "--json", str(out), "-q"])
+    text = capsys.readouterr().out
+    assert code == 1
+    assert 'fatline simulate repaired --q 2 --init "0,3/2 1,7/2 3/2,0"' in text
+    data = json.loads(out.read_text())
+    assert data["format"] == "fatline-reach"
+    three = data["searches"][1]
+    assert three["robots"] == 3 and ["0", "3/2"] in three["stuck"][0]
+    assert three["initial"] == three["line_any_movers"] + len(three["stuck"])
+
+
+def test_cli_with_left_legs_reaches_every_line_and_replays(capsys):
+    code = main(["reach", "repaired", "--q", "2", "--robots", "3", "--with", "left", "--verify", "-q"])
+    text = capsys.readouterr().out
+    assert code == 0
+    assert "what-if left" in text and "every initial configuration reaches a line" in text
+    assert "replayed by the executable model" in text
+
+
+@pytest.mark.parametrize(
+    ("argv", "needle"),
+    [
+        (["reach", "paper"], "expected a model with repair_lock=left-first"),
+        (["reach", "repaired", "--with", "up"], "with='up': expected what-if leg kinds from left, corner"),
+        (["reach", "repaired", "--q", "0"], "q='0'"),
+        (["reach", "repaired", "--robots", "0"], "robots='0'"),
+        (["reach", "repaired", "--window", "9"], "window='9'"),
+    ],
+)
+def test_cli_bad_input_is_one_line_and_exit_2(argv, needle, capsys):
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert needle in err and len(err.strip().splitlines()) == 1
+
+
+def test_cli_does_not_overwrite_a_file_it_did_not_write(tmp_path, capsys):
+    mine = tmp_path / "notes.json"
+    mine.write_text('{"mine": true}')
+    assert main(["reach", "repaired", "--robots", "2", "--json", str(mine), "-q"]) == 2
+    assert "is not a fatline reach result" in capsys.readouterr().err
+    assert mine.read_text() == '{"mine": true}'
+
+
+SQUARE = ((0, 0), (0, 4), (4, 0), (4, 4))
+
+
+def test_the_square_is_a_deadlock_for_every_algorithm_of_one_radius_moves():
+    """Each robot of the square, alone with the robots it sees (an L), splits that swarm by each of its
+    four unit moves: played again here by the executable model, round by round."""
+    from fatline_verify.algorithm import ORIGIN, Decision, Rule
+
+    model = load_model("repaired")
+    rows = universal_deadlock(SQUARE, model)
+    assert rows is not None and len(rows) == 4 * 4
+    for i, end, what in rows:
+        star = (ORIGIN, *snapshot(SQUARE, i, model))
+        assert len(star) == 3 and is_connected(star, model)  # a legal swarm: the corner of an L
+        result = play_round(star, [0], model, {0: Decision(Rule.REPAIR_DETOUR, end, (ORIGIN, end), ())})
+        assert result.violations and what == "splits the swarm"
+
+
+def test_one_radius_moves_off_the_axes_free_the_square_at_q2_and_the_l_is_no_deadlock():
+    model = load_model("repaired")
+    assert universal_deadlock(SQUARE[:3], model) is None  # the L's other robots may move
+    at2 = model.with_q(2)
+    assert universal_deadlock(tuple((2 * x, 2 * y) for x, y in SQUARE), at2) is None  # (1/2, 1/2) keeps both edges
+
+
+def test_the_every_algorithm_deadlocks_are_stuck_for_the_family_and_the_rules_do_not_move_there():
+    model = load_model("repaired")
+    result = reach(model, 4, (9, 9))
+    assert result.universal == (SQUARE,)
+    assert set(result.universal) <= set(result.stuck)
+    for spec in ("repaired", PROGRESS):
+        assert enabled(decide_all(SQUARE, load_model(spec))) == ()
+
+
+def test_a_longer_move_is_what_frees_the_square_at_q1():
+    """The corner repair (a leg of sqrt(2) radii, beyond what the unit-step argument covers) moves there."""
+    model = load_model("bench/repaired-corner.toml")
+    moves = [d.destination for d in decide_all(SQUARE, model).values() if d.moves]
+    assert moves and all(dx * dx + dy * dy > model.radius**2 for dx, dy in moves)
