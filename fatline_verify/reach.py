@@ -3,8 +3,9 @@
 The checker judges one rule set: from each initial configuration, every activation of *its*
 decisions. When liveness fails there, two different things may be wrong: the rules chose badly
 (another rule set could do better), or the safety mechanism itself leaves no way to the line. This
-module tells them apart. The **family** is every move the repaired rule set's safety proof covers
-(:mod:`fatline_verify.smt.legs`): a robot that sees no robot strictly left of it (``repair_lock``)
+module tells them apart. The **family** is the moves of the classes the repaired rule set's safety
+proof covers (:mod:`fatline_verify.smt.legs`), on the lattice and never across the RMA (Lemma 3): a
+robot that sees no robot strictly left of it (``repair_lock``)
 makes one leg of a proved class that :func:`fatline_verify.repairs.allowed` passes (clear of every
 robot it sees, every edge kept or bridged), ``k`` lattice units long, ``1 <= k <= q`` (one radius
 at most):
@@ -28,9 +29,17 @@ vertically at once, as ``repair_progress = corner``: its edge tests are used).
 The search runs in two phases. Rounds with one mover are a subgraph of the round graph and far
 cheaper: an initial configuration that reaches a line there reaches one in the round graph. Only
 the others are searched again with every set of movers at once. States are kept up to translation;
-the family keeps the swarm connected (proved), so finitely many states are reachable and nothing is
-cut off. Every answer is checked apart from the search (:func:`replay_witness`,
-:func:`confirm_stuck`).
+the legs keep the swarm connected (proved), so finitely many states are reachable and nothing is cut
+off. Every round is also played through the executable model's own checks (collisions along the
+paths, the graph, the RMA: :mod:`fatline_verify.schedule`) before it is followed; one that fails them
+is counted and not followed (none is expected of the proved legs; with what-if legs it keeps the
+search to safe rounds). Each stuck configuration is searched again on its own
+(:func:`confirm_stuck`), and with ``witnesses`` a shortest way to a line from every other one is
+played again by :func:`fatline_verify.schedule.play_round` (:func:`replay_witness`).
+
+*Deadlocks for every algorithm* (:func:`universal_deadlock`) need neither the family nor the search:
+a configuration where each robot, alone with the robots it sees, can make no move of at most one
+radius without a collision or a split is left as it is by every safe algorithm of such moves.
 """
 
 from __future__ import annotations
@@ -46,9 +55,10 @@ from .config import Model
 from .explore.initial import initial_array
 from .geometry import Path
 from .numbers import Point
+from .options import Goal, Scheduler
 from .repair_options import RepairLock, RepairProgress
 from .repairs import allowed, locked
-from .schedule import collisions, disconnection, play_round, snapshot
+from .schedule import collisions, disconnection, play_round, rma_violations, snapshot
 from .swarm import is_goal
 
 State = tuple[Point, ...]
@@ -141,16 +151,16 @@ class Family:
             got = self._legs[snap] = family_legs(snap, self.model, self.kinds)
         return got
 
-    @property
-    def proved(self) -> bool:
-        """Whether every leg is of a class the safety proof covers (no round needs checking)."""
-        return self.kinds <= PROVED
-
     def safe(self, state: State, moves: Moves) -> bool:
-        """Whether a round collides nobody, keeps the graph connected and the RMA (what-if legs)."""
+        """Whether a round collides nobody, keeps the graph connected and nobody crosses the RMA, by the
+        executable model's own checks (:mod:`fatline_verify.schedule`)."""
         paths: dict[int, Path] = {i: (state[i], moved(state, ((i, end),))[i]) for i, end in moves}
         after = moved(state, moves)
-        return not collisions(state, paths, self.model) and disconnection(state, after, self.model) is None
+        return (
+            not collisions(state, paths, self.model)
+            and disconnection(state, after, self.model) is None
+            and not rma_violations(state, after)
+        )
 
     def one_mover(self, state: State) -> Iterator[Moves]:
         """Rounds with exactly one mover."""
@@ -176,7 +186,7 @@ class _Graph:
 
     rounds: Rounds
     safe: Callable[[State, Moves], bool] | None = None
-    """For what-if legs: whether a round is safe; unsafe rounds are counted, not followed."""
+    """Whether a round is safe; unsafe rounds are counted, not followed."""
     parents: dict[State, set[State]] = field(default_factory=dict)
     unsafe: int = 0
 
@@ -234,7 +244,8 @@ class ReachResult:
     replayed: int | None = None
     """Rounds of the ways to a line replayed by :func:`replay_witness` (``None``: not asked)."""
     unsafe: int = 0
-    """With what-if legs: rounds that would collide or split the swarm (counted, not followed)."""
+    """Rounds that would collide, split the swarm or cross the RMA (counted, not followed; none is
+    expected of the proved legs)."""
     universal: tuple[State, ...] = ()
     """Initial configurations that are deadlocks for every algorithm of one-radius lattice moves
     (:func:`universal_deadlock`), whatever its legs, lock or rules."""
@@ -281,12 +292,11 @@ def reach(
         return is_goal(s, family.model)
 
     first = starts(model, n, window)
-    check = None if family.proved else family.safe
-    single = _Graph(family.one_mover, check)
+    single = _Graph(family.one_mover, family.safe)
     single.close(first)
     dist1 = single.distances(goal)
     hard = [s for s in first if s not in dist1]
-    full = _Graph(family.any_movers, check)
+    full = _Graph(family.any_movers, family.safe)
     full.close(hard)
     dist2 = full.distances(goal)
     paths: dict[State, list[tuple[State, Moves]]] = {}
@@ -317,7 +327,9 @@ def reach(
         confirmed,
         replayed,
         single.unsafe + full.unsafe,
-        tuple(s for s in first if not goal(s) and universal_deadlock(s, family.model) is not None),
+        tuple(s for s in first if not goal(s) and universal_deadlock(s, family.model) is not None)
+        if alone(model)
+        else (),
     )
 
 
@@ -333,7 +345,7 @@ def replay_witness(
     state = start
     for k, (at, moves) in enumerate(steps):
         if canonical(state) != at:
-            return [f"round {k}: starts from {canonical(state)}, not {at}"]
+            return [*problems, f"round {k}: starts from {canonical(state)}, not {at}"]
         state = at  # the round's robot indices are those of the canonical state
         for i, end in moves:
             snap = snapshot(state, i, m)
@@ -354,7 +366,7 @@ def confirm_stuck(start: State, model: Model, kinds: frozenset[Kind] = PROVED) -
     """The number of states reachable from ``start`` by any rounds of the family, searched afresh;
     raises if one of them is on a line (the search's answer would be wrong)."""
     family = Family(model, kinds)
-    graph = _Graph(family.any_movers, None if family.proved else family.safe)
+    graph = _Graph(family.any_movers, family.safe)
     graph.close([start])
     on_line = [s for s in graph.parents if is_goal(s, family.model)]
     if on_line:
@@ -370,10 +382,17 @@ def unit_legs(model: Model) -> tuple[Point, ...]:
     return tuple((a, b) for a in span for b in span if (a, b) != ORIGIN and a * a + b * b <= rho * rho)
 
 
+def alone(model: Model) -> bool:
+    """Whether the model's scheduler may activate one robot alone (what :func:`universal_deadlock` needs):
+    SSYNC and centralized, not FSYNC."""
+    return model.options.scheduler in (Scheduler.SSYNC, Scheduler.CENTRALIZED)
+
+
 def universal_deadlock(state: State, model: Model) -> list[tuple[int, Point, str]] | None:
-    """Whether ``state`` is a deadlock for **every** algorithm whose moves are at most one radius long and
-    stay on the lattice, and that never lets a swarm collide or split, oblivious robots under a
-    scheduler that may activate one robot alone (SSYNC, centralized); lock, rules and family aside.
+    """Whether ``state`` is a deadlock for **every** algorithm of oblivious robots that do not know how many
+    they are, whose moves are straight and at most one radius long and stay on the lattice, and that
+    never lets a swarm collide or split under a scheduler that may activate one robot alone (SSYNC,
+    centralized: :func:`alone`); lock, rules and family aside.
 
     The argument: a robot decides on what it sees. Take robot i and only the robots it sees: a legal
     swarm (a star around i, so connected), where i sees exactly what it sees in ``state``, so it makes
@@ -395,10 +414,10 @@ def universal_deadlock(state: State, model: Model) -> list[tuple[int, Point, str
 
 
 def refuse(model: Model) -> None:
-    """Bad input, before any work: a model without the repairs the family's legs are proved under, or
-    under a scheduler the proof does not cover (ASYNC)."""
+    """Bad input, before any work: a model without the repairs the family's legs are proved under, one
+    ``fatline prove`` refuses (ASYNC, corner legs), or another goal than one vertical."""
     from .errors import InvalidInput
-    from .options import Scheduler
+    from .prove_tasks import check_encoded
     from .smt.legs import missing_repairs
 
     missing = missing_repairs(model)
@@ -407,10 +426,11 @@ def refuse(model: Model) -> None:
             f"model={model.name!r}: the family's legs are those the repaired rule set's proof covers; "
             f"expected a model with {', '.join(missing)} (e.g. repaired)"
         )
-    if model.options.scheduler is Scheduler.ASYNC:
+    check_encoded(model)  # what fatline prove refuses (ASYNC, corner legs) has no proved legs to search
+    if model.options.goal is not Goal.VERTICAL_LINE:
         raise InvalidInput(
-            f"scheduler={model.options.scheduler}: the family's rounds are the round schedulers' "
-            "(ssync, fsync, centralized); expected one of them"
+            f"goal={model.options.goal}: the family's search looks for the robots on one vertical; expected "
+            f"goal={Goal.VERTICAL_LINE}"
         )
 
 

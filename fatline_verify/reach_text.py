@@ -7,7 +7,7 @@ from typing import Any
 from .config import Model, model_to_mapping
 from .numbers import format_number
 from .outputs import Kind as OutputKind
-from .reach import PROVED, Kind, ReachResult, State
+from .reach import PROVED, Kind, ReachResult, State, alone
 
 
 def _radii(model: Model, state: State) -> str:
@@ -22,20 +22,36 @@ def _point_list(model: Model, state: State) -> list[list[str]]:
 def _kinds_text(kinds: frozenset[Kind]) -> str:
     proved = ", ".join(k.value for k in Kind if k in PROVED)
     extra = [k.value for k in Kind if k in kinds and k not in PROVED]
-    text = f"{proved} (proved safe: fatline_verify/smt/legs.py)"
+    text = f"{proved} (the classes fatline prove proves safe: fatline_verify/smt/legs.py)"
     return text + (f" + what-if {', '.join(extra)} (no proof covers them)" if extra else "")
 
 
+def _simulate(model: Model, ref: str, state: State) -> str:
+    q = f" --q {model.parameters.q}" if model.parameters.q != 1 else ""
+    return f'fatline simulate {ref}{q} --init "{_radii(model, state)}"'
+
+
 def reach_lines(
-    model: Model, kinds: frozenset[Kind], window: tuple[int, int], results: list[ReachResult], *, shown: int
+    model: Model,
+    ref: str,
+    kinds: frozenset[Kind],
+    window: tuple[int, int],
+    results: list[ReachResult],
+    *,
+    shown: int,
 ) -> list[str]:
-    """The table, then the stuck configurations (the first ``shown`` per robot count), then what was
-    checked apart from the search."""
+    """The table, then the stuck configurations (the first ``shown`` per robot count, each as a
+    ``fatline simulate`` command on ``ref``, the model as the user named it), then what was checked."""
     w, h = window
+    q = model.parameters.q
+    radii = (
+        f"{format_number(model.from_lattice((w - 1, h - 1))[0])}x{format_number(model.from_lattice((w - 1, h - 1))[1])}"
+    )
     lines = [
         f"model {model.describe()}",
-        f"legs: {_kinds_text(kinds)}; any set of unlocked robots, each any of its legs, every round; "
-        f"{w}x{h} window, every initial configuration",
+        f"legs: {_kinds_text(kinds)}, each one to {q} lattice units (at most one radius), right no farther than "
+        "the greatest x the mover sees; in a round, any set of robots the lock lets move, each any of its legs",
+        f"initial configurations: every one in a {w}x{h} window of lattice points ({radii} radii), up to translation",
         "",
         f"{'robots':>6}  {'initial':>9}  {'line, 1 mover':>13}  {'line, any':>9}  {'stuck':>7}  "
         f"{'every algorithm':>15}  states",
@@ -43,59 +59,62 @@ def reach_lines(
     for r in results:
         lines.append(
             f"{r.n:>6}  {r.initial:>9,}  {r.one_mover:>13,}  {r.reached:>9,}  {len(r.stuck):>7,}  "
-            f"{len(r.universal):>15,}  {r.states[0]:,} + {r.states[1]:,}"
+            f"{len(r.universal) if alone(model) else '-':>15}  {r.states[0]:,} + {r.states[1]:,}"
         )
     stuck = [r for r in results if r.stuck]
     if stuck:
         lines += [
             "",
             "STUCK: from these initial configurations no state on one vertical is reachable by any rounds of these "
-            "legs, so no rule set whose moves are these legs (oblivious or not) brings them to a line:",
+            "legs, so no rule set whose moves are these legs on this lattice (oblivious or not) brings them to a "
+            "line:",
         ]
         for r in stuck:
             more = f" (first {shown}; --json lists all)" if len(r.stuck) > shown else ""
             lines.append(f"  {r.n} robots, {len(r.stuck):,} configurations{more}:")
-            q = f" --q {model.parameters.q}" if model.parameters.q != 1 else ""
-            for s in r.stuck[:shown]:
-                lines.append(f'    fatline simulate {model.name}{q} --init "{_radii(model, s)}"')
+            lines += [f"    {_simulate(model, ref, s)}" for s in r.stuck[:shown]]
     else:
         lines += ["", "every initial configuration reaches a line by some rounds of these legs"]
     universal = [r for r in results if r.universal]
     if universal:
         lines += [
             "",
-            "DEADLOCKED FOR EVERY ALGORITHM whose moves are at most one radius and stay on this lattice (whatever "
-            "its lock, rules or legs): each robot sees what it would see alone with the robots it sees (a legal "
-            "swarm), and there every such move of it, it alone active, collides or splits the swarm; so an "
-            "oblivious algorithm that never does either under SSYNC keeps every robot of these still:",
+            "DEADLOCKED FOR EVERY ALGORITHM of oblivious robots that do not know their number, whose moves are "
+            f"straight, at most one radius long and on this lattice, under {model.options.scheduler} (whatever its "
+            "lock, rules or legs): each robot sees what it would see alone with the robots it sees (a legal swarm), "
+            "and there every such move of it, it alone active, collides or splits the swarm; an algorithm that never "
+            "does either keeps every robot of these still:",
         ]
         for r in universal:
-            for s in r.universal[:shown]:
-                lines.append(f"  {r.n} robots: {_radii(model, s)}")
-    if any(k not in PROVED for k in kinds):
-        unsafe = sum(r.unsafe for r in results)
+            lines += [f"  {r.n} robots: {_simulate(model, ref, s)}" for s in r.universal[:shown]]
+    elif not alone(model):
         lines += [
             "",
-            f"what-if legs: every round is played by the executable model first; {unsafe:,} would collide or split "
-            "the swarm (counted, not followed)",
+            f"deadlocks for every algorithm: not looked for under {model.options.scheduler}, where no robot "
+            "is ever activated alone",
         ]
-    lines.append("")
+    unsafe = sum(r.unsafe for r in results)
+    lines += [
+        "",
+        f"every round was first played through the executable model's collision, connectivity and RMA checks: "
+        f"{unsafe:,} failed them (counted, not followed)",
+    ]
     if stuck:
         confirmed = sum(r.confirmed for r in results)
         lines.append(
-            f"checked apart from the search: each stuck configuration searched again on its own ({confirmed:,} "
-            "states, no line among them)"
+            f"each stuck configuration was searched again on its own with every set of movers ({confirmed:,} states, "
+            "no line among them)"
         )
     replayed = [r.replayed for r in results if r.replayed is not None]
     if replayed:
         lines.append(
-            f"checked apart from the search: a shortest way to a line from every other configuration, replayed by the "
-            f"executable model ({sum(replayed):,} rounds: every leg one of the mover's, no collision, the graph "
-            "connected, the RMA kept)"
+            f"a shortest way to a line from every other configuration was replayed by fatline_verify.schedule."
+            f"play_round ({sum(replayed):,} rounds: every leg one of the mover's, no collision, the graph connected, "
+            "the RMA kept)"
         )
     lines.append(
-        "Bounds: initial configurations in the window; the rounds are not bounded (the legs keep the swarm connected, "
-        "so finitely many states are reachable up to translation)."
+        "Bounds: the initial configurations of the window; the rounds are not bounded (the legs keep the swarm "
+        "connected, so finitely many states are reachable up to translation)."
     )
     return lines
 
@@ -120,7 +139,15 @@ def reach_to_json(
                 "unsafe_rounds": r.unsafe,
                 **({"replayed_rounds": r.replayed} if r.replayed is not None else {}),
                 "stuck": [_point_list(model, s) for s in r.stuck],
-                "deadlocked_for_every_algorithm": [_point_list(model, s) for s in r.universal],
+                **(
+                    {
+                        "deadlocked_for_every_algorithm_of_one_radius_lattice_moves": [
+                            _point_list(model, s) for s in r.universal
+                        ]
+                    }
+                    if alone(model)
+                    else {}
+                ),
             }
             for r in results
         ],

@@ -64,9 +64,24 @@ def test_every_move_of_the_repaired_rules_is_a_leg_of_the_family(spec, q):
 def test_the_pocket_is_stuck_and_left_legs_free_it():
     model = load_model("repaired").with_q(2)
     pocket = canonical(model.to_lattice(p) for p in POCKET.robots)
-    assert confirm_stuck(pocket, model) >= 1
+    assert confirm_stuck(pocket, model) == 1  # no robot has a leg: the certificate of fatline_verify/pocket.py
     with pytest.raises(AssertionError, match="reaches the line"):
         confirm_stuck(pocket, model, PROVED | {Kind.LEFT})
+
+
+def test_two_phases_find_what_one_search_of_every_set_of_movers_finds():
+    """Phase 1 (one mover) is a shortcut: the stuck sets equal those of one search with every set of movers."""
+    from fatline_verify.reach import _Graph, starts
+
+    for q, n in ((1, 3), (1, 4), (2, 3)):
+        model = load_model("repaired").with_q(q)
+        family = Family(model)
+        first = starts(model, n, (9, 9))
+        graph = _Graph(family.any_movers, family.safe)
+        graph.close(first)
+        good = graph.distances(lambda s, m=model: is_goal(s, m))
+        assert tuple(sorted(s for s in first if s not in good)) == reach(model, n, (9, 9)).stuck
+        assert graph.unsafe == 0  # the proved legs never fail the executable model's checks
 
 
 def _rules_reach_a_line(state, model, limit=20_000) -> bool:
@@ -104,13 +119,18 @@ def test_stuck_configurations_are_not_brought_to_a_line_by_the_rules_and_every_o
 
 def test_a_way_that_breaks_the_rules_is_reported():
     model = load_model("repaired").with_q(2)
-    result = reach(model, 2, (5, 5), witnesses=True)
-    start, steps = next((s, w) for s, w in sorted(result.witnesses.items()) if w)
+    result = reach(model, 3, (9, 9), witnesses=True)
+    start, steps = next((s, w) for s, w in sorted(result.witnesses.items()) if len(w) >= 2)
+    assert replay_witness(start, steps, model) == []
     at, moves = steps[0]
     (i, end), *_ = moves
     twisted = [(at, ((i, (-end[0] - 1, end[1])),)), *steps[1:]]
     assert any("has no leg to" in p for p in replay_witness(start, twisted, model))
-    assert any("starts from" in p for p in replay_witness(start, steps[1:], model)) or not steps[1:]
+    assert any("starts from" in p for p in replay_witness(start, steps[1:], model))
+    assert any("ends off a line" in p for p in replay_witness(start, steps[:-1], model))
+    locked_robot = next(j for j in range(3) if any(c[0] < 0 for c in snapshot(at, j, model)))
+    held = [(at, ((locked_robot, (0, 1)),))]
+    assert any("held by the lock" in p for p in replay_witness(start, held, model))
 
 
 def test_the_safety_check_of_what_if_rounds_catches_a_collision():
@@ -126,12 +146,18 @@ def test_cli_reports_stuck_configurations_and_writes_json(tmp_path, capsys):
     code = main(["reach", "repaired", "--q", "2", "--robots", "2..3", "--json", str(out), "-q"])
     text = capsys.readouterr().out
     assert code == 1
-    assert 'fatline simulate repaired --q 2 --init "0,3/2 1,7/2 3/2,0"' in text
+    command = 'fatline simulate repaired --q 2 --init "0,3/2 1,7/2 3/2,0"'
+    assert command in text
     data = json.loads(out.read_text())
     assert data["format"] == "fatline-reach"
     three = data["searches"][1]
     assert three["robots"] == 3 and ["0", "3/2"] in three["stuck"][0]
     assert three["initial"] == three["line_any_movers"] + len(three["stuck"])
+    assert three["deadlocked_for_every_algorithm_of_one_radius_lattice_moves"] == []
+    assert three["unsafe_rounds"] == 0
+    capsys.readouterr()
+    assert main(["simulate", "repaired", "--q", "2", "--init", "0,3/2 1,7/2 3/2,0"]) == 1  # the command it prints
+    assert "deadlock" in capsys.readouterr().out
 
 
 def test_cli_with_left_legs_reaches_every_line_and_replays(capsys):
@@ -139,13 +165,51 @@ def test_cli_with_left_legs_reaches_every_line_and_replays(capsys):
     text = capsys.readouterr().out
     assert code == 0
     assert "what-if left" in text and "every initial configuration reaches a line" in text
-    assert "replayed by the executable model" in text
+    assert "was replayed by fatline_verify.schedule.play_round" in text
+
+
+def _repaired_file(tmp_path, **options):
+    from fatline_verify.config import model_from_mapping, model_to_mapping
+
+    data = model_to_mapping(load_model("repaired"))
+    data["options"].update(options)  # type: ignore[attr-defined]
+    model = model_from_mapping(data)
+    path = tmp_path / "variant.toml"
+    options = data["options"]
+    assert isinstance(options, dict)
+    lines = ['name = "variant"', "[options]", *(f'{k} = "{v}"' for k, v in options.items())]
+    path.write_text("\n".join(lines) + "\n")
+    assert load_model(str(path)).options == model.options
+    return str(path)
+
+
+def test_under_fsync_no_deadlock_for_every_algorithm_is_claimed(tmp_path, capsys):
+    path = _repaired_file(tmp_path, scheduler="fsync")
+    assert main(["reach", path, "--robots", "4", "--window", "9x9", "-q"]) == 1
+    text = capsys.readouterr().out
+    assert "not looked for under fsync" in text and "DEADLOCKED FOR EVERY ALGORITHM" not in text
+
+
+@pytest.mark.parametrize(
+    ("options", "needle"),
+    [
+        ({"repair_progress": "corner"}, "repair_progress='corner'"),
+        ({"scheduler": "async"}, "scheduler=async"),
+        ({"goal": "any-line"}, "goal=any-line"),
+    ],
+)
+def test_models_without_proved_legs_or_another_goal_are_refused(tmp_path, capsys, options, needle):
+    assert main(["reach", _repaired_file(tmp_path, **options), "--robots", "2"]) == 2
+    err = capsys.readouterr().err
+    assert needle in err and len(err.strip().splitlines()) == 1
 
 
 @pytest.mark.parametrize(
     ("argv", "needle"),
     [
         (["reach", "paper"], "expected a model with repair_lock=left-first"),
+        (["reach", "repaired", "--window", "3x3", "--robots", "3"], "no initial configuration of 3 robots fits"),
+        (["reach", "repaired", "--window", "99999x99999", "--robots", "2"], "does not pack into 63 bits"),
         (["reach", "repaired", "--with", "up"], "with='up': expected what-if leg kinds from left, corner"),
         (["reach", "repaired", "--q", "0"], "q='0'"),
         (["reach", "repaired", "--robots", "0"], "robots='0'"),

@@ -43,7 +43,9 @@ def _kinds(text: str | None) -> frozenset[Any]:
 
 
 def cmd_reach(args: argparse.Namespace) -> int:
-    from ..reach import reach, refuse
+    from ..checker import validate_resources
+    from ..explore.lattice import KeyCodec
+    from ..reach import reach, refuse, starts
     from ..reach_text import reach_lines, reach_to_json
 
     model = model_arg(args.model)
@@ -53,6 +55,21 @@ def cmd_reach(args: argparse.Namespace) -> int:
     refuse(model)
     lo, hi = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else model.bounds.robots
     window = parse_window(args.window, error=InvalidInput) if args.window is not None else model.bounds.window
+    for n in range(lo, hi + 1):  # the initial configurations are enumerated as the checker's keys
+        try:
+            KeyCodec(n, window)
+        except ValueError:
+            raise InvalidInput(
+                f"window={window[0]}x{window[1]} with robots={n}: a state does not pack into 63 bits; expected a "
+                "smaller window or fewer robots"
+            ) from None
+    validate_resources(model, (lo, hi), window)
+    empty = [n for n in range(lo, hi + 1) if not starts(model, n, window)]
+    if empty:
+        raise InvalidInput(
+            f"window={window[0]}x{window[1]}: no initial configuration of {empty[0]} robots fits it at "
+            f"q={model.parameters.q} (lattice points, {model.parameters.q} per radius); expected a larger --window"
+        )
     json_path = claim_file(args.json, name="json", kind=Kind.REACH, force=args.force) if args.json else None
 
     results = []
@@ -65,7 +82,7 @@ def cmd_reach(args: argparse.Namespace) -> int:
                 bar.step(f"{n} robots: {len(results[-1].stuck):,} stuck")
         except KeyboardInterrupt:
             interrupted = True
-    lines = reach_lines(model, kinds, window, results, shown=SHOWN)
+    lines = reach_lines(model, args.model, kinds, window, results, shown=SHOWN)
     if interrupted:
         done = ", ".join(str(r.n) for r in results) or "none"
         lines.append(f"INTERRUPTED: robot counts finished: {done}; the rest was not searched")

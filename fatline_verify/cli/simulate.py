@@ -26,6 +26,7 @@ from .common import (
 )
 
 MAX_ROUNDS = 1_000_000
+MAX_Q = 1000
 DEFAULT_SEED = 0
 DEFAULT_ROUNDS = 100
 
@@ -46,6 +47,8 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         _random_only(args)
     trace = claim_file(args.trace, name="trace", kind=Kind.TRACE, force=args.force) if args.trace is not None else None
     model = model_arg(args.model)
+    if args.q is not None:  # the lattice the repaired rules shorten their legs on (1/q radius)
+        model = model.with_q(args.q)
     initial = parse_init(args.init, model)
     if args.scheduler:  # the trace records the scheduler it ran under, so replay runs it again
         model = replace(model, options=model.options.with_(scheduler=args.scheduler))
@@ -113,6 +116,12 @@ def register(sub: Any) -> None:
         type=integer("rounds", 0, MAX_ROUNDS),
         default=None,
         help=f"stop after this many rounds, or events under async (default {DEFAULT_ROUNDS}; not with --schedule)",
+    )
+    p.add_argument(
+        "--q",
+        type=integer("q", 1, MAX_Q),
+        help="lattice points per radius (default: the model's): what a move may be shortened to, as in fatline check "
+        "--q (positions need not lie on it)",
     )
     p.add_argument("--trace", help="write the run as a trace JSON file")
     add_force(p)
