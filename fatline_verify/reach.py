@@ -341,7 +341,7 @@ def replay_witness(
     the RMA), each mover's leg is one of its legs, and the last state is on one vertical."""
     family = Family(model, kinds)
     m = family.model
-    problems = []
+    problems: list[str] = []
     state = start
     for k, (at, moves) in enumerate(steps):
         if canonical(state) != at:
