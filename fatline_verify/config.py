@@ -8,6 +8,7 @@ and two discs touch at ``2 q``. Positions at the boundary (CLI, traces) are in r
 
 from __future__ import annotations
 
+import functools
 import math
 import tomllib
 from collections.abc import Callable
@@ -73,6 +74,20 @@ class Bounds:
     """A cap on states per search; ``None``: what ``--max-memory`` affords."""
 
 
+@functools.cache
+def _view(rad_v: Number, q: int) -> int:
+    """:attr:`Model.view`, computed once per parameters (it is asked for on every pair of every round)."""
+    return int(Fraction(rad_v) * q)
+
+
+@functools.cache
+def _view2(rad_v: Number, q: int, visibility: Visibility) -> int:
+    """:attr:`Model.view2`, computed once per parameters and reading."""
+    extra = {Visibility.CENTRE: 0, Visibility.ANY_PART: 1, Visibility.WHOLE_DISC: -1}[visibility]
+    reach = _view(rad_v, q) + extra * q
+    return reach * reach
+
+
 @dataclass(frozen=True, slots=True)
 class Model:
     """Algorithm readings + parameters + bounds. Passed explicitly everywhere; there is no global model."""
@@ -101,14 +116,12 @@ class Model:
     @property
     def view(self) -> int:
         """The visibility radius in lattice units."""
-        return int(Fraction(self.parameters.rad_v) * self.parameters.q)
+        return _view(self.parameters.rad_v, self.parameters.q)
 
     @property
     def view2(self) -> int:
         """Squared distance up to which a robot sees another's centre, per ``visibility``."""
-        extra = {Visibility.CENTRE: 0, Visibility.ANY_PART: 1, Visibility.WHOLE_DISC: -1}[self.options.visibility]
-        reach = self.view + extra * self.radius
-        return reach * reach
+        return _view2(self.parameters.rad_v, self.parameters.q, self.options.visibility)
 
     @property
     def contact2(self) -> int:

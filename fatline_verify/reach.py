@@ -48,17 +48,16 @@ from collections import deque
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field, replace
 from enum import StrEnum
-from itertools import product
+from itertools import combinations, product
 
 from .algorithm import ORIGIN, Decision, Rule
 from .config import Model
 from .explore.initial import initial_array
-from .geometry import Path
 from .numbers import Point
 from .options import Goal, Scheduler
 from .repair_options import RepairLock, RepairProgress
 from .repairs import allowed, locked
-from .schedule import collisions, disconnection, play_round, rma_violations, snapshot
+from .schedule import closest_dist2, collides, collisions, disconnection, play_round, rma_violations, snapshot
 from .swarm import is_goal
 
 State = tuple[Point, ...]
@@ -153,14 +152,23 @@ class Family:
 
     def safe(self, state: State, moves: Moves) -> bool:
         """Whether a round collides nobody, keeps the graph connected and nobody crosses the RMA, by the
-        executable model's own checks (:mod:`fatline_verify.schedule`)."""
-        paths: dict[int, Path] = {i: (state[i], moved(state, ((i, end),))[i]) for i, end in moves}
+        executable model's own checks (:mod:`fatline_verify.schedule`). Pairs too far apart to meet
+        (more than two radii plus both legs) are not measured."""
+        m = self.model
+        ends = dict(moves)
         after = moved(state, moves)
-        return (
-            not collisions(state, paths, self.model)
-            and disconnection(state, after, self.model) is None
-            and not rma_violations(state, after)
-        )
+        reach2 = 24 * m.radius * m.radius  # (2 + 2 sqrt(2))^2 < 24 radii^2: the longest legs are corners
+        for i, j in combinations(range(len(state)), 2):
+            if i not in ends and j not in ends:
+                continue
+            (xi, yi), (xj, yj) = state[i], state[j]
+            if (xi - xj) ** 2 + (yi - yj) ** 2 > reach2:
+                continue
+            pi = (state[i], after[i]) if i in ends else None
+            pj = (state[j], after[j]) if j in ends else None
+            if collides(closest_dist2(pi, pj, state[i], state[j], m), m):
+                return False
+        return disconnection(state, after, m) is None and not rma_violations(state, after)
 
     def one_mover(self, state: State) -> Iterator[Moves]:
         """Rounds with exactly one mover."""
@@ -178,6 +186,10 @@ class Family:
 
 
 Rounds = Callable[[State], Iterable[Moves]]
+
+CONFIRM = 100
+"""Stuck configurations searched again on their own per robot count, evenly spread (all with ``witnesses``):
+each search starts afresh, so thousands of them cost far more than the search that found them."""
 
 
 @dataclass
@@ -240,7 +252,9 @@ class ReachResult:
     witnesses: dict[State, list[tuple[State, Moves]]] = field(repr=False)
     """For each initial configuration that reaches a line, a shortest way there (one phase's rounds)."""
     confirmed: int = 0
-    """States of the searches that confirmed each stuck configuration on its own (:func:`confirm_stuck`)."""
+    """States of the searches that confirmed stuck configurations on their own (:func:`confirm_stuck`)."""
+    confirmed_configurations: int = 0
+    """How many stuck configurations were searched again (:data:`CONFIRM`, evenly spread; all with ``witnesses``)."""
     replayed: int | None = None
     """Rounds of the ways to a line replayed by :func:`replay_witness` (``None``: not asked)."""
     unsafe: int = 0
@@ -304,7 +318,8 @@ def reach(
         paths = {s: _path(single, dist1, s) for s in first if s in dist1}
         paths |= {s: _path(full, dist2, s) for s in hard if s in dist2}
     stuck = tuple(sorted(s for s in hard if s not in dist2))
-    confirmed = sum(confirm_stuck(s, model, kinds) for s in stuck)
+    again = stuck if witnesses or len(stuck) <= CONFIRM else stuck[:: -(-len(stuck) // CONFIRM)]
+    confirmed = sum(confirm_stuck(s, model, kinds) for s in again)
     replayed = None
     if witnesses:
         replayed = 0
@@ -325,6 +340,7 @@ def reach(
         states,
         paths,
         confirmed,
+        len(again),
         replayed,
         single.unsafe + full.unsafe,
         tuple(s for s in first if not goal(s) and universal_deadlock(s, family.model) is not None)

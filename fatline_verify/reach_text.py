@@ -101,9 +101,15 @@ def reach_lines(
     ]
     if stuck:
         confirmed = sum(r.confirmed for r in results)
+        again = sum(r.confirmed_configurations for r in results)
+        total = sum(len(r.stuck) for r in results)
+        which = (
+            "each stuck configuration was"
+            if again == total
+            else f"{again:,} of the {total:,} stuck configurations (evenly spread; --verify: all) were"
+        )
         lines.append(
-            f"each stuck configuration was searched again on its own with every set of movers ({confirmed:,} states, "
-            "no line among them)"
+            f"{which} searched again on its own with every set of movers ({confirmed:,} states, no line among them)"
         )
     replayed = [r.replayed for r in results if r.replayed is not None]
     if replayed:
@@ -136,6 +142,7 @@ def reach_to_json(
                 "line_any_movers": r.reached,
                 "states": list(r.states),
                 "confirmed_states": r.confirmed,
+                "confirmed_configurations": r.confirmed_configurations,
                 "unsafe_rounds": r.unsafe,
                 **({"replayed_rounds": r.replayed} if r.replayed is not None else {}),
                 "stuck": [_point_list(model, s) for s in r.stuck],

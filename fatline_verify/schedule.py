@@ -171,9 +171,11 @@ def lost_edges(before: Sequence[Point], after: Sequence[Point], model: Model) ->
 
 def disconnection(before: Sequence[Point], after: Sequence[Point], model: Model) -> Disconnection | None:
     """The lost connectivity, when the graph was connected before and is not after."""
+    lost = tuple(pair for pair, _ in lost_edges(before, after, model))
+    if not lost:  # every edge before is an edge after: connected after if it was before
+        return None
     if is_connected(after, model) or not is_connected(before, model):
         return None
-    lost = tuple(pair for pair, _ in lost_edges(before, after, model))
     comps = sorted(tuple(sorted(c)) for c in nx.connected_components(visibility_graph(after, model)))
     return Disconnection(tuple(comps), lost)
 

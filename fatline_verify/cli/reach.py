@@ -114,7 +114,8 @@ def register(sub: Any) -> None:
     p.add_argument(
         "--verify",
         action="store_true",
-        help="also replay a shortest way to a line from every configuration that has one (slower)",
+        help="also replay a shortest way to a line from every configuration that has one, and search every stuck "
+        "one again on its own (slower)",
     )
     p.add_argument(
         "--json", type=nonempty("json", "a file name for the JSON results"), help="write the results as JSON"
