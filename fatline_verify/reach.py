@@ -23,7 +23,8 @@ an exact, rule-free statement, found by exhaustive search. (The converse does no
 that can be reached still needs a rule set that finds the way from what each robot sees.)
 
 *What-if* kinds (:class:`Kind`) add legs the safety proof does **not** cover, to ask which kind of
-leg a live repair would need: ``left`` (one radius or less left) and ``corner`` (right and
+leg a live repair would need: ``left`` (one radius or less left, by a robot that sees one right of
+it, so never off the RMA) and ``corner`` (right and
 vertically at once, as ``repair_progress = corner``: its edge tests are used).
 
 The search runs in two phases. Rounds with one mover are a subgraph of the round graph and far
@@ -75,7 +76,7 @@ class Kind(StrEnum):
     VERTICAL = "vertical"
     """Proved: the ``top`` and ``bottom`` classes."""
     LEFT = "left"
-    """What-if: one radius or less left (no leg obligation covers it)."""
+    """What-if: one radius or less left, by a robot that sees one right of it (no leg obligation covers it)."""
     CORNER = "corner"
     """What-if: right and vertically at once, as ``repair_progress = corner`` (up to sqrt(2) radii long)."""
 
@@ -110,7 +111,7 @@ def family_legs(snap: tuple[Point, ...], model: Model, kinds: frozenset[Kind] = 
             tries += [((0, k), False) for k in range(-rho, rho + 1) if k]
         elif not below:
             tries += [((0, k), True) for k in range(1, min(rho, room) + 1)]
-    if Kind.LEFT in kinds:
+    if Kind.LEFT in kinds and right > 0:  # a robot that may be on the RMA may not leave it (Lemma 3)
         tries += [((-k, 0), False) for k in range(1, rho + 1)]
     if Kind.CORNER in kinds:
         for k in range(1, min(rho, right) + 1):
