@@ -1,6 +1,7 @@
 #!/usr/bin/env python
 """Which initial configurations no rule set of the repaired family brings to a line, and which leg
-kinds would free them (``fatline reach``), as the README's table.
+kinds would free them (``fatline reach``), as the README's table: per family, the stuck initial
+configurations, the seconds, and the rounds that failed the executable model's checks (not followed).
 
 Usage: python bench/reach.py [--quick]   (from the repository root; --quick: 2-4 robots at q = 1)."""
 
@@ -34,7 +35,8 @@ def main() -> None:
             t = time.perf_counter()
             r = reach(model, n, (9, 9), kinds)
             universal, initial = len(r.universal), r.initial
-            cells.append(f"{len(r.stuck):,} ({time.perf_counter() - t:.0f} s)")
+            failed = f", {r.unsafe:,} rounds failed the checks" if r.unsafe else ""
+            cells.append(f"{len(r.stuck):,} ({time.perf_counter() - t:.0f} s{failed})")
         print(f"| q = {q}, {n} | {initial:,} | {universal:,} | " + " | ".join(cells) + " |", flush=True)
 
 
