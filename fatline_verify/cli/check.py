@@ -18,6 +18,7 @@ from .common import (
     EXIT_INCONCLUSIVE,
     EXIT_INTERRUPTED,
     EXIT_OK,
+    add_bounds,
     add_command,
     add_force,
     add_model_argument,
@@ -99,8 +100,7 @@ def cmd_check(args: argparse.Namespace) -> int:
 def register(sub: Any) -> None:
     p = add_command(sub, "check", "check every lemma on every small swarm and every activation set (bounded)")
     add_model_argument(p)
-    p.add_argument("--robots", help="robot count or range, e.g. 3 or 2..4 (default: the model's bounds)")
-    p.add_argument("--window", help="WIDTHxHEIGHT lattice points, e.g. 9x9 (default: the model's bounds)")
+    add_bounds(p)
     p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")
     p.add_argument(
         "--max-states",

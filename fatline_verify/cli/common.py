@@ -89,6 +89,12 @@ def add_model_argument(p: argparse.ArgumentParser) -> None:
     p.add_argument("model", nargs="?", default="paper", help="model file or shipped model name (default: paper)")
 
 
+def add_bounds(p: argparse.ArgumentParser) -> None:
+    """``--robots`` and ``--window``, defaulting to the model's bounds (``check``, ``reach``)."""
+    p.add_argument("--robots", help="robot count or range, e.g. 3 or 2..4 (default: the model's bounds)")
+    p.add_argument("--window", help="WIDTHxHEIGHT lattice points, e.g. 9x9 (default: the model's bounds)")
+
+
 def add_force(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--force", action="store_true", help="overwrite output files that are not earlier outputs of this tool"

@@ -13,6 +13,7 @@ from .common import (
     EXIT_FOUND,
     EXIT_INTERRUPTED,
     EXIT_OK,
+    add_bounds,
     add_command,
     add_force,
     add_model_argument,
@@ -102,8 +103,7 @@ def register(sub: Any) -> None:
         "whether any rule set whose moves are the repaired family's legs could bring each small swarm to a line",
     )
     add_model_argument(p)
-    p.add_argument("--robots", help="robot count or range, e.g. 3 or 2..4 (default: the model's bounds)")
-    p.add_argument("--window", help="WIDTHxHEIGHT lattice points, e.g. 9x9 (default: the model's bounds)")
+    add_bounds(p)
     p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")
     p.add_argument(
         "--with",
