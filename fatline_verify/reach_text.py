@@ -71,7 +71,8 @@ def reach_lines(
         ]
         for r in stuck:
             more = f" (first {shown}; --json lists all)" if len(r.stuck) > shown else ""
-            lines.append(f"  {r.n} robots, {len(r.stuck):,} configurations{more}:")
+            plural = "s" if len(r.stuck) != 1 else ""
+            lines.append(f"  {r.n} robots, {len(r.stuck):,} configuration{plural}{more}:")
             lines += [f"    {_simulate(model, ref, s)}" for s in r.stuck[:shown]]
     else:
         lines += ["", "every initial configuration reaches a line by some rounds of these legs"]
