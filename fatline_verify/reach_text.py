@@ -49,8 +49,9 @@ def reach_lines(
     )
     lines = [
         f"model {model.describe()}",
-        f"legs: {_kinds_text(kinds)}, each one to {q} lattice units (at most one radius), right no farther than "
-        "the greatest x the mover sees; in a round, any set of robots the lock lets move, each any of its legs",
+        f"legs: {_kinds_text(kinds)}, each {'one lattice unit' if q == 1 else f'1 to {q} lattice units'} long per "
+        "axis (one radius at most), right no farther than the greatest x the mover sees; in a round, any set of "
+        "robots the lock lets move, each any of its legs",
         f"initial configurations: every one in a {w}x{h} window of lattice points ({radii} radii), up to translation",
         "",
         f"{'robots':>6}  {'initial':>9}  {'line, 1 mover':>13}  {'line, any':>9}  {'stuck':>7}  "
