@@ -198,7 +198,7 @@ class _Graph:
     """The closure of some states under ``rounds``, kept as reverse edges (canonical states)."""
 
     rounds: Rounds
-    safe: Callable[[State, Moves], bool] | None = None
+    safe: Callable[[State, Moves], bool]
     """Whether a round is safe; unsafe rounds are counted, not followed."""
     parents: dict[State, set[State]] = field(default_factory=dict)
     unsafe: int = 0
@@ -213,7 +213,7 @@ class _Graph:
                 nxt = canonical(moved(state, moves))
                 if nxt == state:
                     continue
-                if self.safe is not None and not self.safe(state, moves):
+                if not self.safe(state, moves):
                     self.unsafe += 1
                     continue
                 fresh = nxt not in self.parents
@@ -277,7 +277,8 @@ def _path(graph: _Graph, dist: dict[State, int], start: State) -> list[tuple[Sta
     while dist[state]:
         for moves in graph.rounds(state):
             nxt = canonical(moved(state, moves))
-            if dist.get(nxt) == dist[state] - 1:
+            # an edge of the graph only: an unsafe round may lead to the same state
+            if dist.get(nxt) == dist[state] - 1 and graph.safe(state, moves):
                 out.append((state, moves))
                 state = nxt
                 break
@@ -320,12 +321,12 @@ def reach(
         paths |= {s: _path(full, dist2, s) for s in hard if s in dist2}
     stuck = tuple(sorted(s for s in hard if s not in dist2))
     again = stuck if witnesses or len(stuck) <= CONFIRM else stuck[:: -(-len(stuck) // CONFIRM)]
-    confirmed = sum(confirm_stuck(s, model, kinds) for s in again)
+    confirmed = sum(confirm_stuck(s, family) for s in again)
     replayed = None
     if witnesses:
         replayed = 0
         for s, steps in paths.items():
-            problems = replay_witness(s, steps, model, kinds)
+            problems = replay_witness(s, steps, family)
             if problems:
                 raise AssertionError(f"the way to a line from {s} does not replay: {problems[0]}")
             replayed += len(steps)
@@ -350,13 +351,10 @@ def reach(
     )
 
 
-def replay_witness(
-    start: State, steps: list[tuple[State, Moves]], model: Model, kinds: frozenset[Kind] = PROVED
-) -> list[str]:
+def replay_witness(start: State, steps: list[tuple[State, Moves]], family: Family) -> list[str]:
     """Problems with a way to a line (empty when it is one), checked apart from the search: each round
     is played by :func:`fatline_verify.schedule.play_round` (collisions along the paths, the graph,
     the RMA), each mover's leg is one of its legs, and the last state is on one vertical."""
-    family = Family(model, kinds)
     m = family.model
     problems: list[str] = []
     state = start
@@ -368,7 +366,7 @@ def replay_witness(
             snap = snapshot(state, i, m)
             if locked(snap) and m.options.repair_lock is RepairLock.LEFT_FIRST:
                 problems.append(f"round {k}: robot {i} at {state[i]} is held by the lock")
-            if end not in {e for e, _ in family_legs(snap, m, kinds)}:
+            if end not in {e for e, _ in family.legs(state, i)}:
                 problems.append(f"round {k}: robot {i} at {state[i]} has no leg to {end}")
         decisions = {i: Decision(Rule.REPAIR_DETOUR, end, (ORIGIN, end), ()) for i, end in moves}
         result = play_round(state, list(decisions), m, decisions)
@@ -379,10 +377,9 @@ def replay_witness(
     return problems
 
 
-def confirm_stuck(start: State, model: Model, kinds: frozenset[Kind] = PROVED) -> int:
-    """The number of states reachable from ``start`` by any rounds of the family, searched afresh;
+def confirm_stuck(start: State, family: Family) -> int:
+    """The number of states reachable from ``start`` by any rounds of ``family``, searched afresh;
     raises if one of them is on a line (the search's answer would be wrong)."""
-    family = Family(model, kinds)
     graph = _Graph(family.any_movers, family.safe)
     graph.close([start])
     on_line = [s for s in graph.parents if is_goal(s, family.model)]

@@ -64,9 +64,9 @@ def test_every_move_of_the_repaired_rules_is_a_leg_of_the_family(spec, q):
 def test_the_pocket_is_stuck_and_left_legs_free_it():
     model = load_model("repaired").with_q(2)
     pocket = canonical(model.to_lattice(p) for p in POCKET.robots)
-    assert confirm_stuck(pocket, model) == 1  # no robot has a leg: the certificate of fatline_verify/pocket.py
+    assert confirm_stuck(pocket, Family(model)) == 1  # no robot has a leg: the certificate of fatline_verify/pocket.py
     with pytest.raises(AssertionError, match="reaches the line"):
-        confirm_stuck(pocket, model, PROVED | {Kind.LEFT})
+        confirm_stuck(pocket, Family(model, PROVED | {Kind.LEFT}))
 
 
 def test_two_phases_find_what_one_search_of_every_set_of_movers_finds():
@@ -120,17 +120,18 @@ def test_stuck_configurations_are_not_brought_to_a_line_by_the_rules_and_every_o
 def test_a_way_that_breaks_the_rules_is_reported():
     model = load_model("repaired").with_q(2)
     result = reach(model, 3, (9, 9), witnesses=True)
+    family = Family(model)
     start, steps = next((s, w) for s, w in sorted(result.witnesses.items()) if len(w) >= 2)
-    assert replay_witness(start, steps, model) == []
+    assert replay_witness(start, steps, family) == []
     at, moves = steps[0]
     (i, end), *_ = moves
     twisted = [(at, ((i, (-end[0] - 1, end[1])),)), *steps[1:]]
-    assert any("has no leg to" in p for p in replay_witness(start, twisted, model))
-    assert any("starts from" in p for p in replay_witness(start, steps[1:], model))
-    assert any("ends off a line" in p for p in replay_witness(start, steps[:-1], model))
+    assert any("has no leg to" in p for p in replay_witness(start, twisted, family))
+    assert any("starts from" in p for p in replay_witness(start, steps[1:], family))
+    assert any("ends off a line" in p for p in replay_witness(start, steps[:-1], family))
     locked_robot = next(j for j in range(3) if any(c[0] < 0 for c in snapshot(at, j, model)))
     held = [(at, ((locked_robot, (0, 1)),))]
-    assert any("held by the lock" in p for p in replay_witness(start, held, model))
+    assert any("held by the lock" in p for p in replay_witness(start, held, family))
 
 
 def test_the_safety_check_of_what_if_rounds_catches_a_collision():
