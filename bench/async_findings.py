@@ -17,10 +17,10 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-from fatline_verify.checker import check, write_witnesses
-from fatline_verify.config import load_model, parse_robots, parse_window, shipped_models
-from fatline_verify.options import Scheduler
-from fatline_verify.properties import CHECKED, Verdict
+from fatline_verify.check.checker import check, write_witnesses
+from fatline_verify.lemmas.properties import CHECKED, Verdict
+from fatline_verify.model.config import load_model, parse_robots, parse_window, shipped_models
+from fatline_verify.model.options import Scheduler
 from fatline_verify.text import table
 
 

@@ -11,9 +11,9 @@ from __future__ import annotations
 import argparse
 from dataclasses import replace
 
-from fatline_verify.checker import CheckPlan, explore_robots
-from fatline_verify.config import load_model
-from fatline_verify.schedule import decide_all, enabled
+from fatline_verify.check.checker import CheckPlan, explore_robots
+from fatline_verify.model.config import load_model
+from fatline_verify.schedulers.round import decide_all, enabled
 
 
 def deadlocks(model, robots: int, window: int) -> tuple[int, list[tuple[int, list[tuple[int, int]]]]]:

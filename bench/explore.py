@@ -12,10 +12,11 @@ from __future__ import annotations
 import argparse
 import time
 
-from fatline_verify.config import load_model
-from fatline_verify.explore.initial import initial_array
-from fatline_verify.explore.search import explore
-from fatline_verify.systems import system_for
+from fatline_verify.check.engines import engine_for
+from fatline_verify.check.initial import initial_array
+from fatline_verify.check.search import explore
+from fatline_verify.model.config import load_model
+from fatline_verify.schedulers.systems import system_for
 from fatline_verify.text import table
 
 BOUNDS = [(3, 9), (4, 9), (4, 12), (5, 9)]
@@ -25,7 +26,7 @@ def measure(model, n: int, w: int, engine: str) -> tuple[int, int, int, float]:
     t0 = time.perf_counter()
     system = system_for(model)
     initial = initial_array(n, (w, w), model)
-    ex = explore(system, system.initial(initial), (w, w), system.engine(engine))
+    ex = explore(system, system.initial(initial), (w, w), engine_for(system, engine))
     return len(initial), ex.n_states, ex.n_transitions, time.perf_counter() - t0
 
 

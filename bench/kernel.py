@@ -29,13 +29,13 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from fatline_verify.config import load_model  # noqa: E402
-from fatline_verify.explore import compiled  # noqa: E402
-from fatline_verify.explore.compiled import CompiledEngine, KeyExpansion, distinct  # noqa: E402
-from fatline_verify.explore.fast import FastEngine  # noqa: E402
-from fatline_verify.explore.initial import initial_array  # noqa: E402
-from fatline_verify.explore.lattice import KeyCodec, canonical  # noqa: E402
-from fatline_verify.systems import system_for  # noqa: E402
+from fatline_verify.check import compiled  # noqa: E402
+from fatline_verify.check.compiled import CompiledEngine, KeyExpansion, distinct  # noqa: E402
+from fatline_verify.check.fast import FastEngine  # noqa: E402
+from fatline_verify.check.initial import initial_array  # noqa: E402
+from fatline_verify.model.config import load_model  # noqa: E402
+from fatline_verify.model.lattice import KeyCodec, canonical  # noqa: E402
+from fatline_verify.schedulers.systems import system_for  # noqa: E402
 from fatline_verify.text import table  # noqa: E402
 
 MODEL = ROOT.parent / "shared" / "anchors" / "spin" / "spin-reading.toml"
@@ -135,10 +135,10 @@ PROBE = """
 import time
 t0 = time.perf_counter()
 import numpy as np
-from fatline_verify.config import load_model
-from fatline_verify.explore.compiled import CompiledEngine
-from fatline_verify.explore.lattice import KeyCodec
-from fatline_verify.systems import system_for
+from fatline_verify.model.config import load_model
+from fatline_verify.check.compiled import CompiledEngine
+from fatline_verify.model.lattice import KeyCodec
+from fatline_verify.schedulers.systems import system_for
 t1 = time.perf_counter()
 model = load_model({model!r})
 codec = KeyCodec(3, (20, 20))

@@ -7,10 +7,10 @@ and only if r sees a robot strictly right of it, so it cannot leave the RMA)."""
 
 import sys
 
-from fatline_verify.checker import CheckPlan, explore_robots
-from fatline_verify.config import load_model
-from fatline_verify.repairs import allowed, locked
-from fatline_verify.schedule import snapshot
+from fatline_verify.check.checker import CheckPlan, explore_robots
+from fatline_verify.model.config import load_model
+from fatline_verify.rules.repaired.algorithm import allowed, locked
+from fatline_verify.schedulers.round import snapshot
 
 
 def admissible(state, i, model):

@@ -1,16 +1,16 @@
 #!/usr/bin/env python
-"""The pocket certificate (fatline_verify/pocket.py), checked exactly under every shipped model that
+"""The pocket certificate (fatline_verify/repair/pocket.py), checked exactly under every shipped model that
 reads repair_lock = left-first, and what the repaired rules do there at q = 2.
 
 Usage: python bench/pocket.py (from the repository root)."""
 
 from __future__ import annotations
 
-from fatline_verify.config import load_model, shipped_models
-from fatline_verify.numbers import show_point
-from fatline_verify.pocket import POCKET, check
-from fatline_verify.repair_options import RepairLock
-from fatline_verify.schedule import decide_all
+from fatline_verify.model.config import load_model, shipped_models
+from fatline_verify.model.numbers import show_point
+from fatline_verify.repair.pocket import POCKET, check
+from fatline_verify.rules.repaired.options import RepairLock
+from fatline_verify.schedulers.round import decide_all
 
 
 def main() -> None:

@@ -10,8 +10,8 @@ from __future__ import annotations
 import sys
 import time
 
-from fatline_verify.config import load_model
-from fatline_verify.reach import PROVED, Kind, reach
+from fatline_verify.model.config import load_model
+from fatline_verify.repair.reach import PROVED, Kind, reach
 
 FAMILIES = {
     "proved (right, vertical)": PROVED,

@@ -10,8 +10,8 @@ import argparse
 import time
 from dataclasses import replace
 
-from fatline_verify.checker import check
-from fatline_verify.config import load_model, parse_robots, parse_window
+from fatline_verify.check.checker import check
+from fatline_verify.model.config import load_model, parse_robots, parse_window
 from fatline_verify.text import table
 
 SETTINGS = [("ssync", None), ("centralized", None), ("fsync", None), ("async", 1), ("async", 2), ("async", 3)]

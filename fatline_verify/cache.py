@@ -7,7 +7,7 @@ import json
 from typing import Any
 
 from . import __version__
-from .config import Model, model_to_mapping
+from .model.config import Model, model_to_mapping
 
 LEGACY_MAX_STATES = 1_000_000
 """The cap every shipped model once set. A model without a cap fingerprints as if it had this one: no

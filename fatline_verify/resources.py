@@ -1,6 +1,6 @@
 """Memory: the machine's, the share a search may use (``--max-memory``), and sizes as text.
 
-A search holds packed keys and compact columns (:class:`fatline_verify.explore.search.Exploration`);
+A search holds packed keys and compact columns (:class:`fatline_verify.check.search.Exploration`);
 it stops cleanly before a level whose projected peak would pass the budget. Without ``--max-states``
 the budget is the only limit on states.
 """

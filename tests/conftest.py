@@ -7,8 +7,8 @@ from typing import Any
 
 import pytest
 
-from fatline_verify.config import Model, Parameters
-from fatline_verify.options import Options
+from fatline_verify.model.config import Model, Parameters
+from fatline_verify.model.options import Options
 
 
 def make_model(rad_v: int | Fraction = 4, q: int = 1, **readings: str) -> Model:
@@ -18,7 +18,7 @@ def make_model(rad_v: int | Fraction = 4, q: int = 1, **readings: str) -> Model:
 
 def task_named(model: Model, key: str) -> Any:
     """The prover's obligation of ``model`` named ``key`` (``lemma/form-case[.and.other]``)."""
-    from fatline_verify.prover import tasks_for
+    from fatline_verify.prove.prover import tasks_for
 
     return next(t for t in tasks_for(model) if t.key == key)
 

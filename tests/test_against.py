@@ -1,4 +1,4 @@
-"""The corpus under another rule set (``fatline_verify/against.py``): under ``repaired`` every
+"""The corpus under another rule set (``fatline_verify/repair/against.py``): under ``repaired`` every
 counterexample of the other models is gone from its own initial configuration, while a model that
 shares the paper's rules keeps them (the check can fail), and the repaired model's page shows it."""
 
@@ -8,7 +8,9 @@ import json
 from collections import Counter
 from pathlib import Path
 
-from fatline_verify.against import (
+from fatline_verify.lemmas.properties import Verdict
+from fatline_verify.model.config import load_model
+from fatline_verify.repair.against import (
     GONE_ON_ITS_ROUNDS,
     NOT_CHECKED,
     STILL_ON_ITS_ROUNDS,
@@ -16,9 +18,7 @@ from fatline_verify.against import (
     corpus_against,
     its_rounds,
 )
-from fatline_verify.config import load_model
-from fatline_verify.properties import Verdict
-from fatline_verify.trace import check_replay, initial_positions
+from fatline_verify.trace.traces import check_replay, initial_positions
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "reports" / "traces"

@@ -11,7 +11,8 @@ from fractions import Fraction as Fr
 
 import pytest
 
-from fatline_verify.algorithm import Band, Case, Rule, classify, decide, free_path, vacancy_blocker
+from fatline_verify.rules.paper.algorithm import Band, Case, Rule, classify, free_path, vacancy_blocker
+from fatline_verify.rules.registry import decide
 from tests.conftest import make_model
 
 A, B, C, D, E, F, G, I = (Band(x) for x in "ABCDEFGI")  # noqa: E741 - the paper's set names
@@ -213,7 +214,7 @@ CASES = [
         (0, 0),
         Case.UNCOVERED,
     ),
-    # The repairs (not the paper's; fatline_verify/repairs.py), each with every repair on.
+    # The repairs (not the paper's; fatline_verify/rules/repaired/algorithm.py), each with every repair on.
     ("repair-align", REPAIRED, 4, [(1, 2)], Rule.REPAIR_ALIGN, (1, 0), None),
     ("repair-contract", REPAIRED, 4, [(0, -4)], Rule.REPAIR_CONTRACT, (0, -1), None),
     ("repair-approach", REPAIRED, 4, [(4, 0)], Rule.REPAIR_APPROACH, (1, 0), Case.UNCOVERED),

@@ -10,18 +10,19 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fatline_verify.algorithm import Rule
-from fatline_verify.checker import check
-from fatline_verify.config import Model, load_model
+from fatline_verify.check.checker import check
+from fatline_verify.check.engines import engine_for
+from fatline_verify.check.initial import initial_array
+from fatline_verify.check.search import explore
 from fatline_verify.errors import InvalidInput
-from fatline_verify.explore.initial import initial_array
-from fatline_verify.explore.search import explore
-from fatline_verify.options import Scheduler
-from fatline_verify.properties import Lemma, Verdict
-from fatline_verify.simulate import Outcome, parse_schedule, play_schedule
-from fatline_verify.systems import system_for
-from fatline_verify.systems.asynchronous import AsyncCodec, async_canonical, current_positions
-from fatline_verify.trace import check_replay, load_trace, run_to_json, validate, write_trace
+from fatline_verify.lemmas.properties import Lemma, Verdict
+from fatline_verify.model.config import Model, load_model
+from fatline_verify.model.options import Scheduler
+from fatline_verify.rules.paper.algorithm import Rule
+from fatline_verify.schedulers.asynchronous import AsyncCodec, async_canonical, current_positions
+from fatline_verify.schedulers.systems import system_for
+from fatline_verify.trace.simulate import Outcome, parse_schedule, play_schedule
+from fatline_verify.trace.traces import check_replay, load_trace, run_to_json, validate, write_trace
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -64,9 +65,9 @@ def test_synchronous_states_are_reachable_asynchronously(K, scheduler):
     sync = replace(base, options=base.options.with_(scheduler=scheduler))
     init = initial_array(3, (6, 6), base)
     s_sys = system_for(sync)
-    s_ex = explore(s_sys, s_sys.initial(init), (6, 6), s_sys.engine("fast"), after_violation="stop")
+    s_ex = explore(s_sys, s_sys.initial(init), (6, 6), engine_for(s_sys, "fast"), after_violation="stop")
     a_sys = system_for(asynchronous(base, K))
-    a_ex = explore(a_sys, a_sys.initial(init), (12, 12), a_sys.engine("fast"), after_violation="continue")
+    a_ex = explore(a_sys, a_sys.initial(init), (12, 12), engine_for(a_sys, "fast"), after_violation="continue")
     sync_states = {tuple(sorted(map(tuple, row.tolist()))) for row in s_ex.states}
     missing = sync_states - _idle_keys(a_ex, K)
     assert len(sync_states) > len(init)  # the synchronous search went somewhere
@@ -104,7 +105,7 @@ def explore_states(model: Model, init) -> list[np.ndarray]:
     system = system_for(model)
     arr = system.initial(np.array([init], dtype=np.int64))
     canon, _ = system.canonical(arr)
-    ex = explore(system, canon, (9, 9), system.engine("scalar"), max_states=100_000)
+    ex = explore(system, canon, (9, 9), engine_for(system, "scalar"), max_states=100_000)
     return [system.array_positions(ex.states[i : i + 1])[0] + 0 for i in range(ex.n_states)]
 
 
@@ -187,7 +188,7 @@ def test_a_round_trace_does_not_replay_as_events():
 
 def test_round_options_leave_no_trace_of_async_settings():
     doc = load_model("paper")
-    from fatline_verify.config import model_to_mapping
+    from fatline_verify.model.config import model_to_mapping
 
     mapping = model_to_mapping(doc)
     assert "async_steps" not in mapping["parameters"] and "motion" not in mapping["options"]

@@ -9,10 +9,10 @@ import z3
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from fatline_verify.algorithm import decide
-from fatline_verify.cases import case_of, cases_for, witnesses
-from fatline_verify.geometry import dist2, path_point_dist2
-from fatline_verify.smt.cases import Arith, decide_case, role_names, same
+from fatline_verify.model.geometry import dist2, path_point_dist2
+from fatline_verify.prove.smt.cases import Arith, decide_case, role_names, same
+from fatline_verify.rules.paper.cases import case_of, cases_for, witnesses
+from fatline_verify.rules.registry import decide
 from tests.conftest import make_model
 from tests.test_properties import readings
 

@@ -13,10 +13,10 @@ from dataclasses import replace
 
 import pytest
 
-from fatline_verify.algorithm import Decision, Rule
-from fatline_verify.checker import check
-from fatline_verify.properties import Lemma, Verdict
-from fatline_verify.trace import check_replay
+from fatline_verify.check.checker import check
+from fatline_verify.lemmas.properties import Lemma, Verdict
+from fatline_verify.rules.paper.algorithm import Decision, Rule
+from fatline_verify.trace.traces import check_replay
 from tests.conftest import make_model
 
 

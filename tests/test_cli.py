@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 
 from fatline_verify.cli import main
-from fatline_verify.config import load_model, shipped_models
 from fatline_verify.errors import InvalidModel
-from fatline_verify.options import CATALOGUE
+from fatline_verify.model.config import load_model, shipped_models
+from fatline_verify.model.options import CATALOGUE
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -11,16 +11,17 @@ import pytest
 from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
-from fatline_verify.algorithm import Decision, Rule, decide
-from fatline_verify.config import load_model
-from fatline_verify.explore.compiled import CompiledEngine, HashTable, KeyExpansion, distinct
-from fatline_verify.explore.fast import FastEngine
-from fatline_verify.explore.initial import initial_array
-from fatline_verify.explore.lattice import KeyCodec, canonical
-from fatline_verify.explore.search import explore
-from fatline_verify.options import CATALOGUE
-from fatline_verify.properties import Lemma
-from fatline_verify.systems import system_for
+from fatline_verify.check.compiled import CompiledEngine, HashTable, KeyExpansion, distinct
+from fatline_verify.check.engines import engine_for
+from fatline_verify.check.fast import FastEngine
+from fatline_verify.check.initial import initial_array
+from fatline_verify.check.search import explore
+from fatline_verify.lemmas.properties import Lemma
+from fatline_verify.model.config import load_model
+from fatline_verify.model.lattice import KeyCodec, canonical
+from fatline_verify.model.options import CATALOGUE
+from fatline_verify.rules.paper.algorithm import Decision, Rule, decide
+from fatline_verify.schedulers.systems import system_for
 from tests.conftest import make_model
 from tests.test_checker_seeded import MUTANTS, toy
 from tests.test_explore import FIELDS, READINGS
@@ -196,7 +197,7 @@ def test_explore_equals_fast_engine(readings):
     system = system_for(model)
     for n, w in [(2, 6), (3, 6)]:
         init = system.initial(initial_array(n, (w, w), model))
-        a = explore(system, init, (w, w), system.engine("fast"))
+        a = explore(system, init, (w, w), engine_for(system, "fast"))
         b = explore(system, init, (w, w), CompiledEngine(system))
         assert b.engine == "compiled"
         for f in FIELDS:
@@ -210,7 +211,7 @@ def test_explore_equals_fast_engine_every_reading(readings):
     system = system_for(model)
     for n, w in [(2, 7), (3, 7), (4, 6)]:
         init = system.initial(initial_array(n, (w, w), model))
-        a = explore(system, init, (w, w), system.engine("fast"))
+        a = explore(system, init, (w, w), engine_for(system, "fast"))
         b = explore(system, init, (w, w), CompiledEngine(system))
         for f in FIELDS:
             assert np.array_equal(getattr(a, f), getattr(b, f)), f
@@ -288,7 +289,7 @@ def test_cache_hits_do_not_ask_the_model_again():
 
 
 def test_hash_table_grows_and_keeps_every_row():
-    from fatline_verify.explore.hashtable import find as _find
+    from fatline_verify.check.hashtable import find as _find
 
     table = HashTable(2, capacity=4)
     rng = np.random.default_rng(1)
@@ -307,8 +308,8 @@ def test_hash_table_grows_and_keeps_every_row():
 def test_goal_and_connectivity_kernels_equal_the_array_code():
     """The per-state kernels against :func:`goal_positions` and :func:`connected_within`, on small
     windows where collinear, coincident and disconnected states are common."""
-    from fatline_verify.explore.compiled import _GOALS, _connected, _goal
-    from fatline_verify.explore.lattice import connected_within, goal_positions
+    from fatline_verify.check.compiled import _GOALS, _connected, _goal
+    from fatline_verify.model.lattice import connected_within, goal_positions
 
     rng = np.random.default_rng(7)
     scratch = np.zeros(8, dtype=np.int64)

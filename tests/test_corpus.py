@@ -14,9 +14,9 @@ from pathlib import Path
 import pytest
 
 from fatline_verify.cli import main
-from fatline_verify.config import load_model, shipped_models
+from fatline_verify.model.config import load_model, shipped_models
 from fatline_verify.report.build import build_report
-from fatline_verify.trace import check_replay, load_trace
+from fatline_verify.trace.traces import check_replay, load_trace
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = sorted((ROOT / "reports" / "traces").glob("*.json"))

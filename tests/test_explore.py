@@ -7,13 +7,14 @@ import json
 import numpy as np
 import pytest
 
-from fatline_verify.checker import check
-from fatline_verify.config import load_model
-from fatline_verify.explore.initial import count_by_brute_force, initial_array, initial_configurations
-from fatline_verify.explore.lattice import KeyCodec, canonical
-from fatline_verify.explore.search import explore
-from fatline_verify.systems import system_for
-from fatline_verify.trace import check_replay
+from fatline_verify.check.checker import check
+from fatline_verify.check.engines import engine_for
+from fatline_verify.check.initial import count_by_brute_force, initial_array, initial_configurations
+from fatline_verify.check.search import explore
+from fatline_verify.model.config import load_model
+from fatline_verify.model.lattice import KeyCodec, canonical
+from fatline_verify.schedulers.systems import system_for
+from fatline_verify.trace.traces import check_replay
 from tests.conftest import make_model
 
 
@@ -31,7 +32,7 @@ def test_initial_configurations_three_ways(n, w, readings):
 
 def test_initial_configurations_are_canonical_and_valid():
     model = make_model()
-    from fatline_verify.swarm import initial_problems
+    from fatline_verify.model.swarm import initial_problems
 
     for s in initial_array(3, (6, 6), model):
         state = tuple(map(tuple, s.tolist()))
@@ -90,8 +91,8 @@ def test_fast_engine_equals_scalar_engine(readings):
     for n, w in [(2, 6), (3, 6)]:
         system = system_for(model)
         init = system.initial(initial_array(n, (w, w), model))
-        a = explore(system, init, (w, w), system.engine("scalar"))
-        b = explore(system, init, (w, w), system.engine("fast"))
+        a = explore(system, init, (w, w), engine_for(system, "scalar"))
+        b = explore(system, init, (w, w), engine_for(system, "fast"))
         for f in FIELDS:
             assert np.array_equal(getattr(a, f), getattr(b, f)), f
 
@@ -138,7 +139,7 @@ def test_max_states_makes_liveness_inconclusive():
 def test_collision_words_equal_the_general_table(readings):
     """The 64-bit collision words (n <= 6) and the general (m, 2^n) table used beyond agree."""
     model = make_model(**readings)
-    engine = system_for(model).engine("fast")
+    engine = engine_for(system_for(model), "fast")
     states = initial_array(4, (6, 6), model)
     dest, corner = engine._destinations(states)
     words = engine._collision_words(states, dest, corner)

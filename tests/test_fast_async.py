@@ -9,12 +9,13 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from fatline_verify.checker import check
-from fatline_verify.config import Model, load_model
-from fatline_verify.explore.initial import initial_array
-from fatline_verify.explore.search import explore
-from fatline_verify.systems import system_for
-from fatline_verify.systems.base import Expansion
+from fatline_verify.check.checker import check
+from fatline_verify.check.engines import engine_for
+from fatline_verify.check.initial import initial_array
+from fatline_verify.check.search import explore
+from fatline_verify.model.config import Model, load_model
+from fatline_verify.schedulers.base import Expansion
+from fatline_verify.schedulers.systems import system_for
 from tests.conftest import make_model
 from tests.test_explore import FIELDS
 
@@ -56,8 +57,8 @@ def test_fast_async_engine_equals_scalar_engine(readings, K):
     system = system_for(model)
     for n, w in [(2, 6), (3, 6)]:
         init = system.initial(initial_array(n, (w, w), model))
-        a = explore(system, init, (w, w), system.engine("scalar"))
-        b = explore(system, init, (w, w), system.engine("fast"))
+        a = explore(system, init, (w, w), engine_for(system, "scalar"))
+        b = explore(system, init, (w, w), engine_for(system, "fast"))
         assert b.engine == "fast"
         for f in FIELDS:
             assert np.array_equal(getattr(a, f), getattr(b, f)), f
@@ -69,29 +70,29 @@ def test_expand_equals_scalar_on_random_reachable_states(K, readings):
     model = asynchronous(make_model(**readings), K)
     system = system_for(model)
     init = system.initial(initial_array(3, (6, 6), model))
-    ex = explore(system, init, (6, 6), system.engine("fast"), after_violation="continue")
+    ex = explore(system, init, (6, 6), engine_for(system, "fast"), after_violation="continue")
     moving = ((ex.states[..., 0:2] != ex.states[..., 2:4]).any(axis=-1)).any(axis=1)
     assert moving.sum() > 300
     rng = np.random.default_rng(7)
     batch = ex.states[rng.choice(np.nonzero(moving)[0], 300, replace=False)]
     others = rng.choice(len(ex.states), 100, replace=False)
     batch = np.concatenate([batch, ex.states[others], ex.states[ex.goal]])
-    fast = system.engine("fast").expand(batch)
-    assert_same_expansion(system.engine("scalar").expand(batch), fast)
+    fast = engine_for(system, "fast").expand(batch)
+    assert_same_expansion(engine_for(system, "scalar").expand(batch), fast)
     assert (~fast.exact).any() and (fast.flags != 0).any() and fast.goal.any()
     assert ((fast.action >> 3) & 1).any() == (readings.get("motion") == "non-rigid")
-    assert len(system.engine("fast").expand(batch[:0]).src) == 0
+    assert len(engine_for(system, "fast").expand(batch[:0]).src) == 0
 
 
 def test_wide_snapshots_use_byte_keys():
     """Eight robots seeing 12 units of 1/3 each way: a snapshot's cell codes do not pack into 63 bits."""
     model = asynchronous(make_model(), 3)
     system = system_for(model)
-    engine = system.engine("fast")
+    engine = engine_for(system, "fast")
     assert engine.cell_bits * 7 > 63
     spots = [(0, 0), (0, 3), (0, 6), (3, 1), (3, 4), (6, 0), (6, 3), (6, 6)]
     init = system.initial(np.array([sorted(spots)], dtype=np.int64))
-    a = explore(system, init, (9, 9), system.engine("scalar"), max_states=150, after_violation="continue")
+    a = explore(system, init, (9, 9), engine_for(system, "scalar"), max_states=150, after_violation="continue")
     b = explore(system, init, (9, 9), engine, max_states=150, after_violation="continue")
     assert a.n_states > 150 and a.truncated
     for f in FIELDS:

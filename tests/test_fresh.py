@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import time
 
-from fatline_verify.config import load_model
 from fatline_verify.fresh import run_fresh
-from fatline_verify.properties import Verdict
-from fatline_verify.prover import hard_limit, overrun_result, tasks_for
+from fatline_verify.lemmas.properties import Verdict
+from fatline_verify.model.config import load_model
+from fatline_verify.prove.prover import hard_limit, overrun_result, tasks_for
 
 
 def test_a_call_past_its_limit_is_stopped_and_reported_and_the_others_finish():

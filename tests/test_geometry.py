@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from fatline_verify.geometry import (
+from fatline_verify.model.geometry import (
     collinear,
     dist2,
     path_point_dist2,

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from fatline_verify.config import load_model, shipped_models
-from fatline_verify.properties import CHECKED
+from fatline_verify.lemmas.properties import CHECKED
+from fatline_verify.model.config import load_model, shipped_models
 from tests.test_cli import run_cli
 
 BENCH = sorted((Path(__file__).resolve().parent.parent / "bench").glob("*.toml"))

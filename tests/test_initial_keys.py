@@ -10,16 +10,16 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fatline_verify.config import load_model
-from fatline_verify.explore import initial
-from fatline_verify.explore.initial import (
+from fatline_verify.check import initial
+from fatline_verify.check.initial import (
     count_by_brute_force,
     initial_array,
     initial_array_by_levels,
     initial_configurations,
     initial_keys,
 )
-from fatline_verify.explore.lattice import KeyCodec
+from fatline_verify.model.config import load_model
+from fatline_verify.model.lattice import KeyCodec
 from tests.conftest import make_model
 
 SPIN = Path(__file__).resolve().parents[2] / "shared" / "anchors" / "spin" / "spin-reading.toml"

@@ -9,8 +9,8 @@ import sys
 import time
 from pathlib import Path
 
-from fatline_verify.config import load_model
-from fatline_verify.prover import tasks_for
+from fatline_verify.model.config import load_model
+from fatline_verify.prove.prover import tasks_for
 
 ROOT = Path(__file__).resolve().parent.parent
 

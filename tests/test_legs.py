@@ -1,4 +1,4 @@
-"""The repaired rule set's leg obligations (``fatline_verify/smt/legs.py``): every condition they assert
+"""The repaired rule set's leg obligations (``fatline_verify/prove/smt/legs.py``): every condition they assert
 holds on the repaired rules' own decisions (random swarms, beyond any window), the argument's chain
 holds on real rounds, a solution of a weakened obligation is not reported as a counterexample, and a
 repaired model without the repairs the legs rest on is refused in one line."""
@@ -13,14 +13,14 @@ import z3
 from hypothesis import given, settings
 
 from fatline_verify.errors import InvalidInput
-from fatline_verify.leg_prover import prove_leg
-from fatline_verify.properties import Lemma, Verdict
-from fatline_verify.prover import tasks_for
-from fatline_verify.repairs import Leg, leg_of
-from fatline_verify.schedule import decide_all, play_round, snapshot
-from fatline_verify.smt import legs
-from fatline_verify.smt.cases import Arith, Pt
-from fatline_verify.smt.legs import LegSpec, Mover, bridged, conditions, kept
+from fatline_verify.lemmas.properties import Lemma, Verdict
+from fatline_verify.prove.legs import prove_leg
+from fatline_verify.prove.prover import tasks_for
+from fatline_verify.prove.smt import legs
+from fatline_verify.prove.smt.cases import Arith, Pt
+from fatline_verify.prove.smt.legs import LegSpec, Mover, bridged, conditions, kept
+from fatline_verify.rules.repaired.algorithm import Leg, leg_of
+from fatline_verify.schedulers.round import decide_all, play_round, snapshot
 from tests.test_repairs import repaired, swarms
 
 
@@ -159,7 +159,7 @@ def test_a_solution_of_weaker_conditions_is_not_reported_as_a_counterexample(mon
 @pytest.mark.parametrize("missing", ["repair_lock", "repair_step", "repair_clear", "repair_edges"])
 def test_a_repaired_model_without_the_repairs_the_legs_need_is_refused(missing, capsys, tmp_path):
     from fatline_verify.cli import main
-    from fatline_verify.config import shipped_models
+    from fatline_verify.model.config import shipped_models
 
     with pytest.raises(InvalidInput, match=rf"{missing}=.* not set"):
         tasks_for(repaired(**{missing: "off"}))

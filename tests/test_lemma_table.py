@@ -6,15 +6,15 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
-from fatline_verify import prover
 from fatline_verify.cli import prove as cli_prove
 from fatline_verify.cli.prove import LEMMA_CHOICES
-from fatline_verify.properties import CHECKED, FLAG, SAFETY, SPECS, Judged, Lemma
-from fatline_verify.prover import LEMMAS
+from fatline_verify.lemmas.properties import CHECKED, FLAG, SAFETY, SPECS, Judged, Lemma
+from fatline_verify.prove import prover
+from fatline_verify.prove.prover import LEMMAS
 from fatline_verify.report.pages import PROVER_LEMMAS
 
 PACKAGE = Path(__file__).resolve().parent.parent / "fatline_verify"
-TABLE = PACKAGE / "properties.py"
+TABLE = PACKAGE / "lemmas" / "properties.py"
 NAMES = {lemma.value for lemma in Lemma}
 
 

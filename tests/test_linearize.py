@@ -10,9 +10,9 @@ import z3
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from fatline_verify.smt.cases import Arith
-from fatline_verify.smt.claims import Built
-from fatline_verify.smt.linearize import (
+from fatline_verify.prove.smt.cases import Arith
+from fatline_verify.prove.smt.claims import Built
+from fatline_verify.prove.smt.linearize import (
     FIRST_GRID,
     Linearization,
     cover,
@@ -22,7 +22,7 @@ from fatline_verify.smt.linearize import (
     sqrt_down,
     sqrt_up,
 )
-from fatline_verify.smt.solving import relaxation, solver_for
+from fatline_verify.prove.smt.solving import relaxation, solver_for
 
 rationals = st.fractions(min_value=-6, max_value=6, max_denominator=1000)
 radii2 = st.fractions(min_value=Fraction(1, 100), max_value=36, max_denominator=100)

@@ -6,12 +6,12 @@ import json
 import shutil
 from pathlib import Path
 
-from fatline_verify import prover
 from fatline_verify.cli import main
-from fatline_verify.config import load_model, shipped_models
-from fatline_verify.proof_results import ProofResults, row_key
-from fatline_verify.properties import Lemma, Verdict
-from fatline_verify.prover import ProofResult
+from fatline_verify.lemmas.properties import Lemma, Verdict
+from fatline_verify.model.config import load_model, shipped_models
+from fatline_verify.prove import prover
+from fatline_verify.prove.prover import ProofResult
+from fatline_verify.prove.results import ProofResults, row_key
 
 ROOT = Path(__file__).resolve().parent.parent
 

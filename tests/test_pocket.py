@@ -1,4 +1,4 @@
-"""Pockets (``fatline_verify.pocket``): an initial configuration no repair keeping the lock and moving
+"""Pockets (``fatline_verify.repair.pocket``): an initial configuration no repair keeping the lock and moving
 robots only rightwards can bring to a line, its certificate checked exactly."""
 
 from __future__ import annotations
@@ -9,10 +9,10 @@ from fractions import Fraction
 from hypothesis import given
 from hypothesis import strategies as st
 
-from fatline_verify.config import load_model
-from fatline_verify.pocket import POCKET, check
-from fatline_verify.repairs import locked
-from fatline_verify.schedule import decide_all, enabled
+from fatline_verify.model.config import load_model
+from fatline_verify.repair.pocket import POCKET, check
+from fatline_verify.rules.repaired.algorithm import locked
+from fatline_verify.schedulers.round import decide_all, enabled
 
 
 def test_the_pocket_is_a_certificate():
@@ -44,7 +44,7 @@ def test_wherever_r_is_in_the_box_both_blockers_are_locked(x, y):
 
 def test_the_checker_meets_the_pocket_as_a_deadlock_of_the_repaired_rules():
     """Under the repaired rules with every progress repair on, at q = 2, no robot of it moves."""
-    from fatline_verify.config import model_from_mapping, model_to_mapping
+    from fatline_verify.model.config import model_from_mapping, model_to_mapping
 
     data = model_to_mapping(load_model("repaired"))
     data["options"]["repair_progress"] = "corner"  # type: ignore[index]

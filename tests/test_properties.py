@@ -8,12 +8,12 @@ from fractions import Fraction as Fr
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from fatline_verify.algorithm import Band, decide
-from fatline_verify.options import CATALOGUE
-from fatline_verify.schedule import decide_all
-from fatline_verify.simulate import simulate
-from fatline_verify.swarm import initial_problems
-from fatline_verify.trace import check_replay, run_to_json, validate
+from fatline_verify.model.options import CATALOGUE
+from fatline_verify.model.swarm import initial_problems
+from fatline_verify.rules.paper.algorithm import Band, decide
+from fatline_verify.schedulers.round import decide_all
+from fatline_verify.trace.simulate import simulate
+from fatline_verify.trace.traces import check_replay, run_to_json, validate
 from tests.conftest import make_model
 
 ALGORITHM_OPTIONS = [n for n, spec in CATALOGUE.items() if n != "scheduler" and not spec.repair]

@@ -5,11 +5,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from fatline_verify.config import load_model
-from fatline_verify.properties import Verdict
-from fatline_verify.prove_replay import replay_known
-from fatline_verify.prove_search import prove_spec
-from fatline_verify.prover import (
+from fatline_verify.lemmas.properties import Verdict
+from fatline_verify.model.config import load_model
+from fatline_verify.prove.prover import (
     EARLIER,
     _known_all,
     _known_beside,
@@ -17,6 +15,8 @@ from fatline_verify.prover import (
     mirror_key,
     reflect,
 )
+from fatline_verify.prove.replay import replay_known
+from fatline_verify.prove.search import prove_spec
 from tests.conftest import task_named
 
 # paper, closer, scenario 2 down-1: r moves to (73/30, -1) and is not closer to (73/30, 31/10) in B
@@ -55,7 +55,7 @@ def _beside(tmp_path, sibling: str, key: str, doc) -> Path:
     """A proofs root holding ``sibling``'s results and its trace of ``key``; returns the directory
     another model's obligations would be written to."""
     from fatline_verify.outputs import Kind, write_json
-    from fatline_verify.trace import write_trace
+    from fatline_verify.trace.traces import write_trace
 
     lemma, rest = key.split("/", 1)
     write_json(tmp_path / sibling / "results.json", {"format": Kind.PROVE.value, "model": sibling, "obligations": []})
@@ -67,7 +67,7 @@ def test_a_counterexample_found_under_a_model_beside_is_replayed_first(tmp_path)
     """The same obligation's counterexample under another model proved beside this one decides here
     when the replay under this model keeps the case and the claim (uncovered=stay does not bear on
     Scenario 2's search); the reason names the model it was found under."""
-    from fatline_verify.trace import check_replay, load_trace
+    from fatline_verify.trace.traces import check_replay, load_trace
 
     root = Path(__file__).resolve().parent.parent / "proofs"
     doc = load_trace(
@@ -91,7 +91,7 @@ def test_a_counterexample_found_under_a_model_beside_is_replayed_first(tmp_path)
 def test_a_counterexample_beside_that_does_not_replay_here_is_searched_past(tmp_path):
     """Another obligation's trace, or one under a reading that changes the case, decides nothing: the
     search runs (and with almost no budget says INCONCLUSIVE, never VIOLATED)."""
-    from fatline_verify.trace import load_trace
+    from fatline_verify.trace.traces import load_trace
 
     root = Path(__file__).resolve().parent.parent / "proofs"
     doc = load_trace(root / "paper" / "traces" / "paper-prove-no-collision-one-mover-scenario-1.json")
@@ -112,7 +112,7 @@ def test_an_earlier_non_initial_violation_is_kept_when_no_initial_one_is_found()
     """An INCONCLUSIVE row's own trace (a violation from a configuration that is not initial) is
     replayed first: with no budget left for a search, the verdict stays INCONCLUSIVE and keeps that
     configuration and its trace, instead of losing them to a budget-only reason."""
-    from fatline_verify.trace import load_trace
+    from fatline_verify.trace.traces import load_trace
 
     key = "no-collision/one-mover-scenario-4-I-nonempty.from-uncovered-both"
     # the row's own trace while it was INCONCLUSIVE (proofs/ now holds an initial counterexample)
@@ -155,7 +155,7 @@ def test_the_reflected_counterexample_of_the_mirror_case_decides_this_one(tmp_pa
     only a counterexample from a configuration that is not initial of its own; Scenario 3's third
     downward one, reflected, is one from an initial configuration. Not reflected, it decides nothing
     (r then takes Scenario 3's case)."""
-    from fatline_verify.trace import check_replay, load_trace, write_trace
+    from fatline_verify.trace.traces import check_replay, load_trace, write_trace
 
     model = load_model("paper")
     key = "connectivity/one-mover-scenario-2.up-3-after-down"

@@ -1,4 +1,4 @@
-"""The prover's small swarms (``fatline_verify.prove_small``): every initial configuration of a few
+"""The prover's small swarms (``fatline_verify.prove.small``): every initial configuration of a few
 robots on a coarse lattice, each robot as r, searched for the obligation's case and a broken claim by
 the executable model alone."""
 
@@ -8,14 +8,14 @@ from pathlib import Path
 
 import pytest
 
-from fatline_verify.cases import case_of
-from fatline_verify.config import load_model
-from fatline_verify.properties import Verdict
-from fatline_verify.prove_search import prove_spec
-from fatline_verify.prove_small import SMALL, small_swarm_counterexample
-from fatline_verify.prover import tasks_for
-from fatline_verify.schedule import decide_all, play_round
-from fatline_verify.trace import check_replay
+from fatline_verify.lemmas.properties import Verdict
+from fatline_verify.model.config import load_model
+from fatline_verify.prove.prover import tasks_for
+from fatline_verify.prove.search import prove_spec
+from fatline_verify.prove.small import SMALL, small_swarm_counterexample
+from fatline_verify.rules.paper.cases import case_of
+from fatline_verify.schedulers.round import decide_all, play_round
+from fatline_verify.trace.traces import check_replay
 from tests.conftest import task_named
 
 # paper-drop-touch: Scenario 2's search fails both ways, I's top robot is also in C less than 2 below
@@ -60,7 +60,7 @@ def test_no_proved_row_of_the_shipped_proofs_has_a_small_swarm_counterexample(na
     import json
     from pathlib import Path
 
-    from fatline_verify.proof_results import row_key
+    from fatline_verify.prove.results import row_key
 
     model = load_model(name)
     rows = json.loads((Path(__file__).parent.parent / "proofs" / name / "results.json").read_text())["obligations"]
@@ -83,7 +83,7 @@ def test_the_prover_asks_the_small_swarms_after_its_first_round():
 @pytest.mark.parametrize("q, robots, window", SMALL)
 def test_the_enumerated_lattices_are_within_one_obligation_s_means(q, robots, window):
     """What the step enumerates stays small: its bound is part of every reason that cites it."""
-    from fatline_verify.explore.initial import initial_array
+    from fatline_verify.check.initial import initial_array
 
     model = load_model("paper").with_q(q)
     assert sum(len(initial_array(n, window, model)) for n in range(2, robots + 1)) < 50_000
@@ -94,7 +94,7 @@ def test_a_lattice_the_model_cannot_be_put_on_is_left_out():
     from dataclasses import replace
     from fractions import Fraction
 
-    from fatline_verify.config import Parameters
+    from fatline_verify.model.config import Parameters
 
     model = load_model("paper")
     model = replace(model, parameters=Parameters(rad_v=Fraction(7, 2), q=2, delta=Fraction(21, 10)))
@@ -106,7 +106,7 @@ KNOWN = Path(__file__).resolve().parent.parent / "docs" / "known"
 
 
 def test_every_hand_built_counterexample_replays():
-    from fatline_verify.trace import load_trace
+    from fatline_verify.trace.traces import load_trace
 
     files = sorted(KNOWN.glob("*.json"))
     assert len(files) == 3

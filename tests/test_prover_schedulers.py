@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from fatline_verify.errors import InvalidInput
-from fatline_verify.prover import prove, tasks_for
+from fatline_verify.prove.prover import prove, tasks_for
 from tests.conftest import make_model
 
 

@@ -1,4 +1,4 @@
-"""``fatline reach`` (:mod:`fatline_verify.reach`): which initial configurations no rule set of the repaired
+"""``fatline reach`` (:mod:`fatline_verify.repair.reach`): which initial configurations no rule set of the repaired
 family can bring to a line, and which it could."""
 
 from __future__ import annotations
@@ -11,9 +11,10 @@ from itertools import combinations
 import pytest
 
 from fatline_verify.cli import main
-from fatline_verify.config import load_model
-from fatline_verify.pocket import POCKET
-from fatline_verify.reach import (
+from fatline_verify.model.config import load_model
+from fatline_verify.model.swarm import is_connected, is_goal
+from fatline_verify.repair.pocket import POCKET
+from fatline_verify.repair.reach import (
     PROVED,
     Family,
     Kind,
@@ -24,8 +25,7 @@ from fatline_verify.reach import (
     replay_witness,
     universal_deadlock,
 )
-from fatline_verify.schedule import decide_all, enabled, play_round, snapshot
-from fatline_verify.swarm import is_connected, is_goal
+from fatline_verify.schedulers.round import decide_all, enabled, play_round, snapshot
 
 PROGRESS = "bench/repaired-progress.toml"
 
@@ -64,14 +64,14 @@ def test_every_move_of_the_repaired_rules_is_a_leg_of_the_family(spec, q):
 def test_the_pocket_is_stuck_and_left_legs_free_it():
     model = load_model("repaired").with_q(2)
     pocket = canonical(model.to_lattice(p) for p in POCKET.robots)
-    assert confirm_stuck(pocket, Family(model)) == 1  # no robot has a leg: the certificate of fatline_verify/pocket.py
+    assert confirm_stuck(pocket, Family(model)) == 1  # no robot has a leg: the certificate of fatline_verify/repair/pocket.py
     with pytest.raises(AssertionError, match="reaches the line"):
         confirm_stuck(pocket, Family(model, PROVED | {Kind.LEFT}))
 
 
 def test_two_phases_find_what_one_search_of_every_set_of_movers_finds():
     """Phase 1 (one mover) is a shortcut: the stuck sets equal those of one search with every set of movers."""
-    from fatline_verify.reach import _Graph, starts
+    from fatline_verify.repair.reach import _Graph, starts
 
     for q, n in ((1, 3), (1, 4), (2, 3)):
         model = load_model("repaired").with_q(q)
@@ -166,11 +166,11 @@ def test_cli_with_left_legs_reaches_every_line_and_replays(capsys):
     text = capsys.readouterr().out
     assert code == 0
     assert "what-if left" in text and "every initial configuration reaches a line" in text
-    assert "was replayed by fatline_verify.schedule.play_round" in text
+    assert "was replayed by fatline_verify.schedulers.round.play_round" in text
 
 
 def _repaired_file(tmp_path, **options):
-    from fatline_verify.config import model_from_mapping, model_to_mapping
+    from fatline_verify.model.config import model_from_mapping, model_to_mapping
 
     data = model_to_mapping(load_model("repaired"))
     data["options"].update(options)  # type: ignore[attr-defined]
@@ -237,7 +237,7 @@ SQUARE = ((0, 0), (0, 4), (4, 0), (4, 4))
 def test_the_square_is_a_deadlock_for_every_algorithm_of_one_radius_moves():
     """Each robot of the square, alone with the robots it sees (an L), splits that swarm by each of its
     four unit moves: played again here by the executable model, round by round."""
-    from fatline_verify.algorithm import ORIGIN, Decision, Rule
+    from fatline_verify.rules.paper.algorithm import ORIGIN, Decision, Rule
 
     model = load_model("repaired")
     rows = universal_deadlock(SQUARE, model)

@@ -1,4 +1,4 @@
-"""The named repairs (``fatline_verify/repairs.py``): each does what its docstring says, the paper's
+"""The named repairs (``fatline_verify/rules/repaired/algorithm.py``): each does what its docstring says, the paper's
 models are untouched by their existence, and the repaired rule set keeps the safety lemmas on every
 round of random swarms (beyond the checker's window)."""
 
@@ -8,14 +8,15 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from fatline_verify.algorithm import Rule, decide, paper_decide
-from fatline_verify.config import load_model, model_to_mapping, shipped_models
-from fatline_verify.geometry import path_point_dist2
-from fatline_verify.options import CATALOGUE, Options
-from fatline_verify.repairs import Leg, allowed, leg_of
-from fatline_verify.schedule import play_round
-from fatline_verify.schedule import snapshot as view_of
-from fatline_verify.swarm import is_connected
+from fatline_verify.model.config import load_model, model_to_mapping, shipped_models
+from fatline_verify.model.geometry import path_point_dist2
+from fatline_verify.model.options import CATALOGUE, Options
+from fatline_verify.model.swarm import is_connected
+from fatline_verify.rules.paper.algorithm import Rule, paper_decide
+from fatline_verify.rules.registry import decide
+from fatline_verify.rules.repaired.algorithm import Leg, allowed, leg_of
+from fatline_verify.schedulers.round import play_round
+from fatline_verify.schedulers.round import snapshot as view_of
 from tests.conftest import make_model
 
 REPAIRED = {name: str(spec.enum(list(spec.readings)[1])) for name, spec in CATALOGUE.items() if spec.repair}

@@ -15,15 +15,14 @@ from typing import Any
 import pytest
 from conftest import make_model  # tests/ is on sys.path under both `pytest` and `python -m pytest`
 
-from fatline_verify.config import Model
 from fatline_verify.docs import main as docs_main
-from fatline_verify.options import CATALOGUE
+from fatline_verify.model.config import Model
+from fatline_verify.model.options import CATALOGUE
 from fatline_verify.report.build import _earlier
 from fatline_verify.report.data import ModelReport
 from fatline_verify.report.pages import cross_model_html, cross_model_markdown, featured, html_numbers, viewer
 from fatline_verify.report.pictures import frame_svg, frames
-from fatline_verify.schedule import play_round
-from fatline_verify.simulate import Outcome, Run, simulate
+from fatline_verify.schedulers.round import play_round
 from fatline_verify.text import (
     READINGS_DOC,
     SHORT,
@@ -33,7 +32,8 @@ from fatline_verify.text import (
     trace_lines,
     violation_line,
 )
-from fatline_verify.trace import run_to_json
+from fatline_verify.trace.simulate import Outcome, Run, simulate
+from fatline_verify.trace.traces import run_to_json
 
 ROOT = Path(__file__).resolve().parent.parent
 LONG_DIGITS = re.compile(r"\d{20,}")

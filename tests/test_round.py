@@ -9,12 +9,20 @@ from fractions import Fraction as Fr
 
 import pytest
 
-from fatline_verify.algorithm import Rule
-from fatline_verify.options import Scheduler
-from fatline_verify.schedule import Collision, Disconnection, RmaMoved, collisions, decide_all, play_round, snapshot
-from fatline_verify.schedulers import round_scheduler
-from fatline_verify.simulate import Outcome, simulate
-from fatline_verify.swarm import initial_problems, is_connected, is_goal
+from fatline_verify.model.options import Scheduler
+from fatline_verify.model.swarm import initial_problems, is_connected, is_goal
+from fatline_verify.rules.paper.algorithm import Rule
+from fatline_verify.schedulers.activation import round_scheduler
+from fatline_verify.schedulers.round import (
+    Collision,
+    Disconnection,
+    RmaMoved,
+    collisions,
+    decide_all,
+    play_round,
+    snapshot,
+)
+from fatline_verify.trace.simulate import Outcome, simulate
 from tests.conftest import make_model
 
 
@@ -93,7 +101,7 @@ def test_round_reports_rma_crossing():
 
 def test_rma_moving_right():
     # No shipped reading overshoots psi_right, so the predicate is checked on planted states.
-    from fatline_verify.schedule import rma_violations
+    from fatline_verify.schedulers.round import rma_violations
 
     assert rma_violations(((0, 0), (3, 0)), ((4, 0), (3, 0))) == [RmaMoved(0, 3, 4)]
     assert rma_violations(((0, 0), (3, 0)), ((3, 0), (3, 0))) == []
@@ -160,7 +168,7 @@ def test_scheduler_kinds_and_fairness(kind):
 
 
 def test_async_simulation_is_seeded_and_replays():
-    from fatline_verify.trace import check_replay, run_to_json
+    from fatline_verify.trace.traces import check_replay, run_to_json
 
     model = make_model(scheduler="async")
     runs = [simulate(((0, 0), (2, 3), (3, 0)), model, seed=s, max_rounds=60) for s in (1, 1, 2)]

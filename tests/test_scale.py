@@ -13,14 +13,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fatline_verify.checker import CheckPlan, check, check_robots, check_to_json
-from fatline_verify.config import load_model
+from fatline_verify.check.checker import CheckPlan, check, check_robots, check_to_json
+from fatline_verify.check.checkpoint import Checkpoint
+from fatline_verify.check.initial import initial_keys
+from fatline_verify.check.search import Limit, LocalShards, explore_keys
+from fatline_verify.check.shard import Shard, owners
 from fatline_verify.errors import InvalidInput
-from fatline_verify.explore.checkpoint import Checkpoint
-from fatline_verify.explore.initial import initial_keys
-from fatline_verify.explore.search import Limit, LocalShards, explore_keys
-from fatline_verify.explore.shard import Shard, owners
-from fatline_verify.systems import system_for
+from fatline_verify.model.config import load_model
+from fatline_verify.schedulers.systems import system_for
 from tests.conftest import make_model
 from tests.test_cli import assert_one_line_error, run_cli
 
@@ -125,7 +125,7 @@ def test_any_number_of_shards_gives_the_same_search(readings):
     model = make_model(**readings)
     system = system_for(model)
     codec = system.codec(3, (8, 8))
-    from fatline_verify.explore.initial import initial_array
+    from fatline_verify.check.initial import initial_array
 
     init = np.sort(codec.encode(system.initial(initial_array(3, (6, 6), model))))
     one = explore_keys(system, 3, init, (8, 8), "fast")
@@ -140,7 +140,7 @@ def test_shards_agree_on_async_byte_keys(motion):
     """Four async robots need two-word keys; a shard with nothing to route must not break the level."""
     model = make_model(scheduler="async", motion=motion)
     system = system_for(model)
-    from fatline_verify.explore.initial import initial_array
+    from fatline_verify.check.initial import initial_array
 
     codec = system.codec(4, (7, 7))
     assert codec.dtype != np.int64
@@ -154,7 +154,7 @@ def test_shards_agree_on_async_byte_keys(motion):
 def test_transitions_are_in_source_then_action_order_for_every_engine():
     model = make_model(scheduler="async", motion="non-rigid")
     system = system_for(model)
-    from fatline_verify.explore.initial import initial_array
+    from fatline_verify.check.initial import initial_array
 
     init = system.initial(initial_array(3, (6, 6), model))
     for engine in ("fast", "scalar"):

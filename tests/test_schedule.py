@@ -8,11 +8,11 @@ from pathlib import Path
 
 import pytest
 
-from fatline_verify.config import load_model
 from fatline_verify.errors import InvalidInput
-from fatline_verify.options import Scheduler
-from fatline_verify.simulate import Outcome, parse_schedule, play_schedule
-from fatline_verify.trace import load_trace, replay
+from fatline_verify.model.config import load_model
+from fatline_verify.model.options import Scheduler
+from fatline_verify.trace.simulate import Outcome, parse_schedule, play_schedule
+from fatline_verify.trace.traces import load_trace, replay
 from tests.test_cli import assert_one_line_error, run_cli
 
 ROOT = Path(__file__).resolve().parent.parent

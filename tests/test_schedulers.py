@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from fatline_verify.errors import Unsupported
-from fatline_verify.options import Scheduler
-from fatline_verify.schedulers import ROUND_SCHEDULERS, round_scheduler
+from fatline_verify.model.options import Scheduler
+from fatline_verify.schedulers.activation import ROUND_SCHEDULERS, round_scheduler
 
 
 def _robots(mask: int, n: int) -> tuple[int, ...]:

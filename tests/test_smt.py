@@ -10,12 +10,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from fatline_verify.algorithm import decide
-from fatline_verify.config import load_model
-from fatline_verify.properties import Verdict
-from fatline_verify.prover import isolated, prove_global, prove_spec, tasks_for
-from fatline_verify.smt.obligations import evaluate, recheck_file
-from fatline_verify.trace import check_replay
+from fatline_verify.lemmas.properties import Verdict
+from fatline_verify.model.config import load_model
+from fatline_verify.prove.prover import isolated, prove_global, prove_spec, tasks_for
+from fatline_verify.prove.smt.obligations import evaluate, recheck_file
+from fatline_verify.rules.registry import decide
+from fatline_verify.trace.traces import check_replay
 from tests.conftest import make_model, task_named
 from tests.test_properties import readings
 
@@ -137,8 +137,8 @@ def test_seeded_unsafe_reading_is_refuted_with_a_replayed_trace():
 
 def test_a_claim_counterexample_is_a_configuration_decide_replays():
     # Lemma 1's argument: in Scenario 2, r moving down is not always closer to the B robots it sees.
-    from fatline_verify.algorithm import Band
-    from fatline_verify.cases import case_of
+    from fatline_verify.rules.paper.algorithm import Band
+    from fatline_verify.rules.paper.cases import case_of
 
     model = make_model()
     result = isolated(
@@ -173,7 +173,7 @@ def test_global_form_looks_on_the_lattice_first_and_keeps_a_one_round_split_only
     """Under the literal readings two robots never split, three do (the solver alone ran out of time
     on it): the checker's search of every initial configuration in the window finds the round, and
     the result is its replayed trace, one round from an initial configuration."""
-    from fatline_verify.prover import _global_on_lattice
+    from fatline_verify.prove.prover import _global_on_lattice
 
     model = load_model("paper-literal")
     assert _global_on_lattice(model, 1) is None
@@ -210,8 +210,8 @@ def test_fsync_one_mover_replays_with_every_enabled_robot_moving():
 
 
 def test_lockstep_l_shaped_paths_are_encoded():
-    from fatline_verify.smt.cases import Arith
-    from fatline_verify.smt.claims import build
+    from fatline_verify.prove.smt.cases import Arith
+    from fatline_verify.prove.smt.claims import build
 
     model = make_model(timing="lockstep", path="horizontal-then-vertical")
     spec = next(t for t in tasks_for(model, two_movers=True) if getattr(t, "form", "") == "two-movers")
@@ -223,7 +223,7 @@ def test_lockstep_l_shaped_paths_are_encoded():
 def test_global_form_activates_what_the_scheduler_allows(scheduler, movers):
     model = make_model(scheduler=scheduler)
     result = isolated(prove_global, model, slots=1, timeout=20, out=None)
-    from fatline_verify.schedule import play_round
+    from fatline_verify.schedulers.round import play_round
 
     assert result.verdict is Verdict.VIOLATED
     active = result.witness["rounds"][0]["active"]
@@ -305,7 +305,7 @@ def _linear_recheck(path: Path) -> str:
     ``tests/test_linearize.py``'s)."""
     import tempfile
 
-    from fatline_verify.smt.linearize import certificate
+    from fatline_verify.prove.smt.linearize import certificate
 
     text = certificate(path)
     if text is None:
@@ -334,7 +334,7 @@ def _proved_rows(with_reason: bool = False):
     [(1, [1]), (4, [4]), (10, [10]), (11, [2, 9]), (20, [2, 18]), (60, [2, 8, 50]), (300, [2, 8, 32, 258])],
 )
 def test_the_budget_grows_in_rounds_and_is_spent_in_full(timeout, expected):
-    from fatline_verify.prover import rounds
+    from fatline_verify.prove.prover import rounds
 
     got = rounds(timeout)
     assert got == pytest.approx(expected)
@@ -370,7 +370,7 @@ def test_a_verdict_near_the_budget_is_the_same_on_every_run():
 def test_an_earlier_counterexample_is_replayed_before_any_search():
     """A counterexample once found stays found: the obligation's own trace is replayed first (no
     budget needed); another obligation's trace does not replay for it, and the search runs."""
-    from fatline_verify.trace import load_trace
+    from fatline_verify.trace.traces import load_trace
 
     model = make_model()
     root = Path(__file__).resolve().parent.parent / "proofs" / "paper" / "traces"
@@ -399,9 +399,9 @@ def test_the_linear_relaxation_keeps_every_solution_and_nothing_nonlinear():
     free Boolean given its comparison's value) still solves it, so its unsat can decide."""
     import z3
 
-    from fatline_verify.smt.cases import Arith
-    from fatline_verify.smt.claims import build
-    from fatline_verify.smt.solving import _nonlinear, check, relaxation, solver_for
+    from fatline_verify.prove.smt.cases import Arith
+    from fatline_verify.prove.smt.claims import build
+    from fatline_verify.prove.smt.solving import _nonlinear, check, relaxation, solver_for
 
     model = make_model()
     spec = task_named(model, "no-collision/one-mover-scenario-1")
@@ -436,7 +436,7 @@ def _scenario_3_snapshots(model):
     """Scenario 3 decisions of the executable model on a grid of 3-robot snapshots around r."""
     from itertools import combinations
 
-    from fatline_verify.algorithm import Rule
+    from fatline_verify.rules.paper.algorithm import Rule
 
     points = [(Fr(x, 2), Fr(y, 2)) for x in range(-7, 8) for y in range(-7, 8) if x * x + y * y >= 16]
     points = [p for p in points if model.sees(p[0] ** 2 + p[1] ** 2)]
@@ -459,7 +459,7 @@ def _scenario_3_snapshots(model):
 def test_an_unknown_says_whether_the_resource_limit_or_the_wall_clock_stopped_it(z3_reason, expected):
     """Only the resource limit is the same on every machine: a check the wall clock stopped says so
     (a verdict it leaves INCONCLUSIVE may be decided on a less busy machine)."""
-    from fatline_verify.smt.solving import unknown_reason
+    from fatline_verify.prove.smt.solving import unknown_reason
 
     class Stopped:
         def reason_unknown(self) -> str:

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from fatline_verify.cli import main
-from fatline_verify.config import load_model
-from fatline_verify.properties import SAFETY, Lemma, Verdict
+from fatline_verify.lemmas.properties import SAFETY, Lemma, Verdict
+from fatline_verify.model.config import load_model
 from fatline_verify.sweep.cover import Recorder, cover, refutes
 from fatline_verify.sweep.run import HOLDS, REFUTED, Sweep, SweepBounds, check_combo
 from fatline_verify.sweep.space import Space, bearing, default_vary

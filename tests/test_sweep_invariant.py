@@ -9,8 +9,8 @@ import networkx as nx
 import numpy as np
 import pytest
 
-from fatline_verify.config import load_model
-from fatline_verify.properties import Lemma, Verdict
+from fatline_verify.lemmas.properties import Lemma, Verdict
+from fatline_verify.model.config import load_model
 from fatline_verify.sweep.invariant import (
     SPREAD_SAFETY,
     TRAPPED,
@@ -105,7 +105,7 @@ def test_the_memo_answers_as_the_model_does_under_each_reading_alone():
     no replay."""
     space = Space(load_model("paper"), ("bands", "vacant", "path", "contact", "timing"))
     base = space.model(space.combo(0))
-    from fatline_verify.checker import CheckPlan, explore_robots
+    from fatline_verify.check.checker import CheckPlan, explore_robots
 
     ex = explore_robots(CheckPlan.of(base, (3, 3), (7, 7)), 3)
     states = np.sort(ex.keys[ex.expanded])[::7][:12]

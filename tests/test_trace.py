@@ -8,8 +8,8 @@ import json
 import pytest
 
 from fatline_verify.errors import InvalidTrace, TraceDidNotReproduce
-from fatline_verify.simulate import Outcome, simulate
-from fatline_verify.trace import check_replay, load_trace, run_to_json, validate, write_trace
+from fatline_verify.trace.simulate import Outcome, simulate
+from fatline_verify.trace.traces import check_replay, load_trace, run_to_json, validate, write_trace
 from tests.conftest import make_model
 
 

@@ -6,12 +6,12 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from ..config import parse_robots, parse_window
 from ..errors import InvalidInput
+from ..model.config import parse_robots, parse_window
 from ..outputs import Kind, claim_dir, claim_file, claim_files, write_json
 from ..progress import Progress
 from ..resources import parse_size
-from ..systems.base import ENGINES
+from ..schedulers.base import ENGINES
 from ..text import check_lines
 from .common import (
     EXIT_FOUND,
@@ -45,7 +45,7 @@ def stage_callback(bar: Progress) -> Any:
 
 
 def cmd_check(args: argparse.Namespace) -> int:
-    from ..checker import CheckPlan, check_to_json, witness_paths, write_witnesses
+    from ..check.checker import CheckPlan, check_to_json, witness_paths, write_witnesses
 
     model = model_arg(args.model)
     robots = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else None

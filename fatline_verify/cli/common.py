@@ -13,10 +13,10 @@ import sys
 from collections.abc import Callable, Sequence
 from typing import Any, NoReturn
 
-from ..config import Model, load_model
 from ..errors import InvalidInput
-from ..numbers import parse_number
-from ..swarm import State
+from ..model.config import Model, load_model
+from ..model.numbers import parse_number
+from ..model.swarm import State
 
 EXIT_OK, EXIT_FOUND, EXIT_BAD, EXIT_INCONCLUSIVE, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
 

@@ -5,9 +5,9 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from ..config import load_model, shipped_models
 from ..errors import InvalidInput
-from ..options import CATALOGUE
+from ..model.config import load_model, shipped_models
+from ..model.options import CATALOGUE
 from ..text import explain_lines
 from .common import EXIT_OK, add_command, emit, model_arg
 

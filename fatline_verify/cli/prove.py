@@ -6,11 +6,11 @@ import argparse
 import os
 from typing import Any
 
+from ..lemmas.properties import Lemma
 from ..outputs import Kind, child, claim_dir, claim_file, claim_files, write_json
 from ..progress import Progress
-from ..properties import Lemma
 from ..text import prove_lines
-from ..trace import initial_radii, load_trace
+from ..trace.traces import initial_radii, load_trace
 from .common import (
     EXIT_FOUND,
     EXIT_INCONCLUSIVE,
@@ -29,18 +29,18 @@ from .common import (
 MAX_SLOTS = 8
 MAX_JOBS = 256
 LEMMA_CHOICES = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
-"""The lemmas ``--lemma`` offers: :data:`fatline_verify.prover.LEMMAS`, named here without
+"""The lemmas ``--lemma`` offers: :data:`fatline_verify.prove.prover.LEMMAS`, named here without
 importing z3 when the parser is built (a test keeps the two equal)."""
 DEFAULT_SLOTS, DEFAULT_TIMEOUT = 3, 60.0
-"""The prover's defaults (:data:`fatline_verify.prover.DEFAULT_SLOTS`, ``DEFAULT_TIMEOUT``), named here
+"""The prover's defaults (:data:`fatline_verify.prove.prover.DEFAULT_SLOTS`, ``DEFAULT_TIMEOUT``), named here
 without importing z3 (a test keeps them equal)."""
 ALL = "all"
 """``--lemma all``: every lemma the prover decides."""
 
 
 def cmd_prove(args: argparse.Namespace) -> int:
-    from ..proof_results import ProofResults
-    from ..prover import LEMMAS, prove, task_key, tasks_for
+    from ..prove.prover import LEMMAS, prove, task_key, tasks_for
+    from ..prove.results import ProofResults
 
     model = model_arg(args.model)
     given = [(name, initial_radii(load_trace(name))) for name in args.known]  # a bad file: exit 2, before any work

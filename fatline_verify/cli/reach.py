@@ -5,8 +5,8 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from ..config import parse_robots, parse_window
 from ..errors import InvalidInput
+from ..model.config import parse_robots, parse_window
 from ..outputs import Kind, claim_file, write_json
 from ..progress import Progress
 from .common import (
@@ -31,7 +31,7 @@ SHOWN = 10
 
 
 def _kinds(text: str | None) -> frozenset[Any]:
-    from ..reach import PROVED, WHAT_IF, Kind
+    from ..repair.reach import PROVED, WHAT_IF, Kind
 
     if text is None:
         return PROVED
@@ -44,10 +44,10 @@ def _kinds(text: str | None) -> frozenset[Any]:
 
 
 def cmd_reach(args: argparse.Namespace) -> int:
-    from ..checker import validate_resources
-    from ..explore.lattice import KeyCodec
-    from ..reach import reach, refuse, starts
-    from ..reach_text import reach_lines, reach_to_json
+    from ..check.checker import validate_resources
+    from ..model.lattice import KeyCodec
+    from ..repair.reach import reach, refuse, starts
+    from ..repair.reach_text import reach_lines, reach_to_json
 
     model = model_arg(args.model)
     kinds = _kinds(args.with_)

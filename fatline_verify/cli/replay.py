@@ -14,12 +14,12 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from ..config import Model
 from ..errors import FatlineError
+from ..model.config import Model
 from ..outputs import Kind, claim_dir, claim_files, write_text
-from ..simulate import Run
 from ..text import trace_lines
-from ..trace import differences, load_trace, replay, run_to_json, trace_model
+from ..trace.simulate import Run
+from ..trace.traces import differences, load_trace, replay, run_to_json, trace_model
 from .common import EXIT_BAD, EXIT_FOUND, EXIT_OK, add_command, add_force, emit, error_line, model_arg
 
 

@@ -6,8 +6,8 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from ..config import shipped_models
 from ..errors import InvalidInput
+from ..model.config import shipped_models
 from ..progress import Progress
 from .common import EXIT_OK, add_command, add_force, emit, integer, model_arg, nonempty, seconds
 from .prove import DEFAULT_SLOTS, DEFAULT_TIMEOUT, MAX_SLOTS

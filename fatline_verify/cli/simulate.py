@@ -7,12 +7,12 @@ from dataclasses import replace
 from typing import Any
 
 from ..errors import InvalidInput
-from ..options import Scheduler
+from ..model.options import Scheduler
 from ..outputs import Kind, claim_file
-from ..simulate import Outcome, parse_schedule, play_schedule, simulate
-from ..systems import system_for
+from ..schedulers.systems import system_for
 from ..text import trace_lines
-from ..trace import run_to_json, write_trace
+from ..trace.simulate import Outcome, parse_schedule, play_schedule, simulate
+from ..trace.traces import run_to_json, write_trace
 from .common import (
     EXIT_FOUND,
     EXIT_OK,

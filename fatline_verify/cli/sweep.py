@@ -6,11 +6,11 @@ import argparse
 import sys
 from typing import Any
 
-from ..config import parse_robots, parse_window
 from ..errors import InvalidInput
+from ..lemmas.properties import CHECKED, Lemma
+from ..model.config import parse_robots, parse_window
 from ..outputs import child, claim_dir
-from ..properties import CHECKED, Lemma
-from ..systems.base import ENGINES
+from ..schedulers.base import ENGINES
 from .check import MAX_Q
 from .common import (
     EXIT_FOUND,
@@ -30,8 +30,8 @@ DEFAULT_WINDOW = (7, 7)
 
 
 def cmd_sweep(args: argparse.Namespace) -> int:
-    from ..checker import CheckPlan
-    from ..explore.workers import require_dask
+    from ..check.checker import CheckPlan
+    from ..check.workers import require_dask
     from ..sweep.page import claim_pages, write_pages
     from ..sweep.run import Sweep, SweepBounds, sweep_lines
     from ..sweep.space import Space, parse_vary

@@ -1,7 +1,7 @@
 """A repaired model's page: the regression corpus replayed under it, beside the counterexamples.
 
 Each counterexample of another model (``reports/traces/``) and what the model does from its initial
-configuration (:mod:`fatline_verify.against`); for the first counterexample of each model and lemma,
+configuration (:mod:`fatline_verify.repair.against`); for the first counterexample of each model and lemma,
 two pictures side by side: the last round of the counterexample, and the same activations under
 this model.
 """
@@ -14,9 +14,9 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from ..against import Against, corpus_against, its_rounds
-from ..config import Model
-from ..trace import load_trace, replayed_document
+from ..model.config import Model
+from ..repair.against import Against, corpus_against, its_rounds
+from ..trace.traces import load_trace, replayed_document
 from .pictures import frame_svg
 
 HEAD = ["counterexample", "breaks", "lemma", "robots", "rounds", "under this model", "detail"]

@@ -19,13 +19,13 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from ..checker import check, check_fingerprint, check_to_json, write_witnesses
-from ..config import Model, load_model, model_from_mapping, model_to_mapping, shipped_models
+from ..check.checker import check, check_fingerprint, check_to_json, write_witnesses
 from ..errors import FatlineError
+from ..model.config import Model, load_model, model_from_mapping, model_to_mapping, shipped_models
 from ..outputs import TEXT_MARKER, Kind, child, claim_dir, claim_files, is_output, read_json, write_json, write_text
-from ..proof_results import ProofResults
-from ..prover import DEFAULT_SLOTS, DEFAULT_TIMEOUT, NotEncodedModel, prove, task_key, tasks_for
-from ..trace import check_replay, load_trace
+from ..prove.prover import DEFAULT_SLOTS, DEFAULT_TIMEOUT, NotEncodedModel, prove, task_key, tasks_for
+from ..prove.results import ProofResults
+from ..trace.traces import check_replay, load_trace
 from .against_pages import against_entries
 from .data import ModelReport
 from .pages import ASSETS, cross_model_html, cross_model_markdown, model_html, model_markdown

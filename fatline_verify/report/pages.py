@@ -14,16 +14,16 @@ import re
 from collections.abc import Callable
 from typing import Any
 
-from ..options import CATALOGUE
-from ..properties import CHECKED, Lemma
-from ..systems import system_for
+from ..lemmas.properties import CHECKED, Lemma
+from ..model.options import CATALOGUE
+from ..schedulers.systems import system_for
 from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, prove_row, violation_line
 from .against_pages import against_html, against_markdown
 from .data import ModelReport
 
 RANK = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
 PROVER_LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
-"""The prover's lemmas, in its results order (:data:`fatline_verify.prover.LEMMAS`, without z3)."""
+"""The prover's lemmas, in its results order (:data:`fatline_verify.prove.prover.LEMMAS`, without z3)."""
 
 VIEWER_JS = """
 document.querySelectorAll('.viewer').forEach(function (v) {

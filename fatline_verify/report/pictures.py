@@ -23,14 +23,15 @@ import itertools
 import matplotlib.pyplot as plt
 from matplotlib.patches import Circle, FancyArrowPatch, Rectangle
 
-from ..algorithm import Band
-from ..config import Model
-from ..options import Bands, Quadrants, Visibility
-from ..schedule import Collision, Disconnection, RmaMoved
-from ..simulate import Run
-from ..systems import system_for
-from ..systems.base import Marks
+from ..model.config import Model
+from ..model.options import Bands, Quadrants, Visibility
+from ..rules import registry
+from ..rules.paper.algorithm import Band
+from ..schedulers.base import Marks
+from ..schedulers.round import Collision, Disconnection, RmaMoved
+from ..schedulers.systems import system_for
 from ..text import SHORT, stay_lines, violation_line
+from ..trace.simulate import Run
 
 plt.rcParams["svg.hashsalt"] = "fatline-verify"
 plt.rcParams["svg.fonttype"] = "none"
@@ -102,7 +103,8 @@ def frame_figure(run: Run, k: int, doc: dict[str, Any]) -> Any:
 
     clip = Circle(pts[acting], reach, fill=False, ls="--", lw=1, color="#4e79a7")
     ax.add_patch(clip)
-    _bands(ax, pts[acting], model, clip)
+    if registry.of(model).bands:
+        _bands(ax, pts[acting], model, clip)
 
     bad: set[int] = set()
     if rnd:

@@ -16,13 +16,13 @@ from typing import Any
 
 import numpy as np
 
-from ..config import Model
 from ..errors import InvalidInput, InvalidTrace
-from ..options import CATALOGUE, Options
-from ..properties import SAFETY, Lemma
-from ..swarm import initial_problems
-from ..systems import system_for
-from ..trace import derive_violation, initial_positions, replay
+from ..lemmas.properties import SAFETY, Lemma
+from ..model.config import Model
+from ..model.options import CATALOGUE, Options
+from ..model.swarm import initial_problems
+from ..schedulers.systems import system_for
+from ..trace.traces import derive_violation, initial_positions, replay
 from .space import Space
 
 
@@ -59,7 +59,7 @@ def refutes(doc: dict[str, Any], lemma: Lemma, model: Model) -> bool:
     Its initial positions must meet the initial condition under ``model``. A step lemma is refuted
     by the first step that violates anything, if it violates ``lemma`` (a swarm that collided or
     split has left the model, as in the checker). The other lemmas are judged on the whole replay as
-    :func:`fatline_verify.trace.derive_violation` judges a trace: a deadlock, or a lasso that closes
+    :func:`fatline_verify.trace.traces.derive_violation` judges a trace: a deadlock, or a lasso that closes
     fairly without a violation."""
     system = system_for(model)
     try:

@@ -21,7 +21,7 @@ collides: past it the swarm has left the model, and the continued graph may dead
 same way, every c' whose *stopped graph* is c's: the same initial states and, for every state c's
 own check expanded, the same expansion as above plus which transitions violate anything (those the
 checker does not follow). By induction over the levels, c' then expands exactly c's states with c's
-transitions, so every verdict read from them is c's (:func:`fatline_verify.checker.lemma_verdicts`
+transitions, so every verdict read from them is c's (:func:`fatline_verify.check.checker.lemma_verdicts`
 reads only expanded states, their enabled sets and transitions, and the goal). The stopped graph
 is smaller, so it also closes readings that differ only past a violation.
 
@@ -37,12 +37,13 @@ from functools import partial
 
 import numpy as np
 
-from ..config import Model
-from ..explore.liveness import fair_cycles
-from ..explore.search import Exploration
-from ..properties import CHECKED, SAFETY, Lemma
-from ..systems import system_for
-from ..systems.base import expand_keys
+from ..check.engines import engine_for
+from ..check.liveness import fair_cycles
+from ..check.search import Exploration
+from ..lemmas.properties import CHECKED, SAFETY, Lemma
+from ..model.config import Model
+from ..schedulers.base import expand_keys
+from ..schedulers.systems import system_for
 from .cover import cover
 from .space import Space
 
@@ -69,7 +70,7 @@ class Explored:
 
 def held_past_violations(ex: Exploration) -> frozenset[Lemma]:
     """The checked lemmas that hold on a continued exploration (``after_violation = continue``), judged
-    as :func:`fatline_verify.checker.lemma_verdicts` judges, without witnesses (a witness there may pass
+    as :func:`fatline_verify.check.checker.lemma_verdicts` judges, without witnesses (a witness there may pass
     a violating step, which a trace does not replay). ``approach`` is claimed only with no fair cycle
     at all (the checker examines each cycle's moves)."""
     if ex.truncated:
@@ -90,7 +91,7 @@ def held_past_violations(ex: Exploration) -> frozenset[Lemma]:
 
 
 def _initial_sig(n: int, bound: tuple[int, int], window: tuple[int, int], model: Model) -> bytes:
-    from ..checker import initial_keys_for
+    from ..check.checker import initial_keys_for
 
     system = system_for(model)
     return initial_keys_for(system, n, window, system.codec(n, bound)).tobytes()
@@ -103,7 +104,7 @@ def _expansion_sig(
     executable model itself, so every reading it depends on is read through the model's options);
     ``stopped``: also which transitions the checker does not follow (they violate something)."""
     system = system_for(model)
-    got = expand_keys(system, system.engine("scalar"), system.codec(n, bound), keys)
+    got = expand_keys(system, engine_for(system, "scalar"), system.codec(n, bound), keys)
     parts = [got.enabled, got.src, got.action, got.key, got.fits, got.exact, (got.flags & lemma.flag) != 0]
     if stopped:
         parts.append(got.flags != 0)

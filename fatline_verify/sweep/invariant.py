@@ -10,7 +10,7 @@ expanded (``after_violation = stop``, every robot count). A reading c' is *trapp
   nothing) leads into E, and s is not a deadlock (some robot enabled, or the robots on the goal).
 
 Then, level by level, c''s search expands only states of E, none of them a deadlock: ``progress``
-holds under c' (:func:`fatline_verify.checker.lemma_verdicts` reads deadlocks off expanded states).
+holds under c' (:func:`fatline_verify.check.checker.lemma_verdicts` reads deadlocks off expanded states).
 For ``termination`` c's non-goal graph must have no cycle (so c has no fair cycle for a reason a
 rank can carry): each state gets its place in a topological order, and c' is trapped when, besides
 the above, it has the same goal states on E, no transition leaves the bound (nothing escapes, so
@@ -29,10 +29,11 @@ from functools import partial
 import networkx as nx
 import numpy as np
 
-from ..config import Model
-from ..properties import SAFETY, Lemma
-from ..systems import system_for
-from ..systems.base import KeyExpansion, expand_keys
+from ..check.engines import engine_for
+from ..lemmas.properties import SAFETY, Lemma
+from ..model.config import Model
+from ..schedulers.base import KeyExpansion, expand_keys
+from ..schedulers.systems import system_for
 from .equivalent import Equivalence, Explored
 from .memo import Memo
 from .space import Space
@@ -60,7 +61,7 @@ class Trap:
 def _expand(trap: Trap, keys: np.ndarray, model: Model) -> KeyExpansion:
     """The executable model's expansion of ``keys`` (the scalar engine: every option read is recorded)."""
     system = system_for(model)
-    return expand_keys(system, system.engine("scalar"), system.codec(trap.n, trap.bound), keys)
+    return expand_keys(system, engine_for(system, "scalar"), system.codec(trap.n, trap.bound), keys)
 
 
 def traps(reference: Model, explored: list[Explored], lemma: Lemma) -> list[Trap] | None:
@@ -103,7 +104,7 @@ class Step:
 
 
 def _initial(trap: Trap, model: Model) -> np.ndarray:
-    from ..checker import initial_keys_for
+    from ..check.checker import initial_keys_for
 
     system = system_for(model)
     return initial_keys_for(system, trap.n, trap.window, system.codec(trap.n, trap.bound))
@@ -191,7 +192,7 @@ def within_known(
     every state their own search reaches is one of ``known`` (the states earlier checks expanded, per
     robot count), none of them a deadlock there; with a step ``lemma`` (:data:`SPREAD_SAFETY`), the
     combinations under which it holds because no state their search reaches has a transition that
-    violates it (:func:`fatline_verify.checker.lemma_verdicts`: a step lemma is judged on every
+    violates it (:func:`fatline_verify.check.checker.lemma_verdicts`: a step lemma is judged on every
     transition out of an expanded state, followed or not).
 
     A search over all of these combinations at once: each known state carries the combinations that

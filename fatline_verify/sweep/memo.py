@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from ..config import Model
+from ..model.config import Model
 from .cover import Recorder
 from .space import Space
 

@@ -11,11 +11,11 @@ from typing import Any
 
 import numpy as np
 
+from ..lemmas.properties import Lemma
 from ..outputs import Kind, claim_files, is_output, write_text
-from ..properties import Lemma
 from ..report.build import stamp
 from ..report.pictures import frame_svg
-from ..trace import check_replay, load_trace
+from ..trace.traces import check_replay, load_trace
 from .run import HOLDS, Sweep, headline
 
 PAGES = ("index.html", "README.md")

@@ -25,10 +25,10 @@ from typing import Any
 import numpy as np
 
 from ..cache import fingerprint
-from ..config import Model, model_to_mapping
 from ..errors import InvalidInput
+from ..lemmas.properties import CHECKED, Lemma, LemmaResult, Verdict
+from ..model.config import Model, model_to_mapping
 from ..outputs import Kind, read_json, write_json
-from ..properties import CHECKED, Lemma, LemmaResult, Verdict
 from .cover import cover, refutes
 from .equivalent import Equivalence, Explored, held_past_violations, same_exploration
 from .invariant import SPREAD_SAFETY, TRAPPED, Trap, spread_termination, trapped, within_known
@@ -91,7 +91,7 @@ def check_combo(model: Model, bounds: SweepBounds, combo: dict[str, int]) -> Fou
     robot counts, the witness of the smallest violating count (replayed by the checker); then, if a
     lemma holds, what those counts expanded, and the same counts explored past violations
     (:mod:`fatline_verify.sweep.equivalent`)."""
-    from ..checker import CheckPlan, explore_robots, lemma_verdicts
+    from ..check.checker import CheckPlan, explore_robots, lemma_verdicts
 
     t0 = time.perf_counter()
     plan = CheckPlan.of(
@@ -368,7 +368,7 @@ class Sweep:
         return self.open_count() == 0
 
     def _checks(self, max_checks: int | None, workers: int, cluster: str | None) -> Iterator[Found]:
-        from ..explore.workers import Cluster
+        from ..check.workers import Cluster
 
         left = max_checks
         with contextlib.ExitStack() as stack:

@@ -14,10 +14,10 @@ from functools import cached_property
 
 import numpy as np
 
-from ..config import Model
 from ..errors import InvalidInput
-from ..options import CATALOGUE, Options
-from ..properties import SAFETY, Lemma
+from ..lemmas.properties import SAFETY, Lemma
+from ..model.config import Model, declared_options
+from ..model.options import CATALOGUE, Options
 
 Cube = Mapping[str, frozenset[int]]
 """Option name -> the reading indices allowed; an option not named is free."""
@@ -28,7 +28,7 @@ NOT_SWEPT = ("scheduler",)
 
 def default_vary(model: Model) -> tuple[str, ...]:
     """Every option that means something under the model's scheduler, but the scheduler."""
-    return tuple(name for name in model.options.as_dict() if name not in NOT_SWEPT)
+    return tuple(name for name in declared_options(model) if name not in NOT_SWEPT)
 
 
 def parse_vary(text: str | None, model: Model) -> tuple[str, ...]:
@@ -38,7 +38,7 @@ def parse_vary(text: str | None, model: Model) -> tuple[str, ...]:
     names = [t.strip() for t in text.split(",") if t.strip()]
     if not names:
         raise InvalidInput(f"vary={text!r}: expected a comma-separated list of option names")
-    meaningful = model.options.as_dict()
+    meaningful = declared_options(model)
     for name in names:
         if name not in CATALOGUE:
             raise InvalidInput(f"vary={name!r}: unknown option; expected one of {', '.join(default_vary(model))}")
@@ -46,7 +46,7 @@ def parse_vary(text: str | None, model: Model) -> tuple[str, ...]:
             raise InvalidInput(f"vary={name!r}: the scheduler is fixed by the model; expected one of the other options")
         if name not in meaningful:
             raise InvalidInput(
-                f"vary={name!r}: means nothing under scheduler={model.options.scheduler}; "
+                f"vary={name!r}: means nothing under scheduler={model.options.scheduler} and rules={model.rules}; "
                 f"expected one of {', '.join(default_vary(model))}"
             )
     if len(set(names)) != len(names):

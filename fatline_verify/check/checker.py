@@ -1,0 +1,512 @@
+"""``fatline check``: every lemma, every small swarm, every activation set, within stated bounds.
+
+For each robot count the checker enumerates the initial configurations, explores every reachable
+canonical state breadth-first, and gives each lemma a verdict: VIOLATED with a shortest witness
+that has been replayed by the executable model, HOLDS_WITHIN_BOUNDS with the bounds and counts, or
+INCONCLUSIVE with the reason. The engine never prints; progress goes through a callback.
+"""
+
+from __future__ import annotations
+
+import re
+import time
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from math import isqrt
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import InvalidInput
+from ..lemmas.properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason, Verdict
+from ..model.config import Model
+from ..model.lattice import KeyCodec
+from ..outputs import Kind, child
+from ..resources import default_max_memory, format_size, machine_memory
+from ..schedulers.base import ENGINES, unknown_engine
+from ..schedulers.systems import system_for
+from ..trace.traces import approach_stuck
+from .checkpoint import claim_checkpoint
+from .engines import engine_for
+from .initial import initial_array, initial_keys
+from .liveness import fair_cycles
+from .search import Exploration, Limit, explore_keys
+from .witness import lasso_run, lasso_witness, state_witness, transition_witness
+from .workers import Cluster, require_dask
+
+ProgressFn = Callable[[str, int, int, str], None]
+"""``progress(stage, done, total, note)``: the stage (robot count and BFS level), states of the level's
+frontier expanded so far, the frontier's size, and a note (states found so far)."""
+
+MAX_LASSOS_TRIED = 20
+CHECKER_VERSION = 2
+"""Bumped whenever the checker's semantics change (part of the report cache's fingerprint)."""
+
+
+@dataclass(frozen=True, slots=True)
+class SearchStats:
+    """The size of one robot count's search."""
+
+    robots: int
+    window: tuple[int, int]
+    engine: str
+    initial: int
+    states: int
+    transitions: int
+    escaped: int
+    violating_only: int
+    off_lattice: int
+    truncated: bool
+    seconds: float
+    bound: tuple[int, int] | None = None
+    """The exploration bound (``None``: the window)."""
+    nbytes: int = 0
+    """Bytes held by the search's arrays at the end."""
+
+
+@dataclass(frozen=True, slots=True)
+class CheckResult:
+    """Every lemma's verdict for every robot count, with the search sizes."""
+
+    model: Model = field(repr=False)
+    window: tuple[int, int]
+    max_states: int | None
+    """``None``: the memory budget was the only limit."""
+    after_violation: str
+    stats: tuple[SearchStats, ...]
+    results: tuple[LemmaResult, ...]
+    complete: bool = True
+    """False when the run was interrupted: only the robot counts in ``stats`` were searched."""
+    bound: tuple[int, int] | None = None
+    max_memory: int = 0
+
+    @property
+    def any_violated(self) -> bool:
+        return any(r.verdict is Verdict.VIOLATED for r in self.results)
+
+    @property
+    def any_inconclusive(self) -> bool:
+        return any(r.verdict is Verdict.INCONCLUSIVE for r in self.results)
+
+
+def validate_bounds(
+    model: Model,
+    robots: tuple[int, int],
+    window: tuple[int, int],
+    max_states: int | None,
+    engine: str = "fast",
+    bound: tuple[int, int] | None = None,
+) -> None:
+    """Reject bounds no search can meet, naming the value."""
+    bound = window if bound is None else bound
+    if engine in ("fast", "compiled") and max(bound) > 128:
+        raise InvalidInput(
+            f"bound={bound[0]}x{bound[1]}: the fast engine packs offsets in 8 bits; expected at most 128x128 "
+            "or --engine scalar"
+        )
+    if max_states is not None and max_states < 1:
+        raise InvalidInput(f"max-states={max_states}: expected a positive number of states")
+    w, h = window
+    if w < 1 or h < 1:
+        raise InvalidInput(f"window={w}x{h}: expected a positive width and height")
+    if bound[0] < w or bound[1] < h:
+        raise InvalidInput(
+            f"bound={bound[0]}x{bound[1]}: expected at least the window {w}x{h} (the bound limits exploration, "
+            "the window the initial configurations)"
+        )
+    system = system_for(model)
+    for n in range(robots[0], robots[1] + 1):
+        try:
+            system.codec(n, bound)
+        except ValueError:
+            what = "window" if bound == window else "bound"
+            bw, bh = bound
+            raise InvalidInput(
+                f"{what}={bw}x{bh} with robots={n}: a state does not pack into 63 bits; expected a smaller {what} "
+                "or fewer robots"
+            ) from None
+
+
+MAX_VIEW_OFFSETS = 1_000_000
+"""The initial enumeration keeps one entry per lattice offset a robot sees; past this many, refuse."""
+
+
+def validate_resources(model: Model, robots: tuple[int, int], window: tuple[int, int]) -> None:
+    """Refuse, before any work, a search whose lattice cannot fit in memory or that has nothing to search."""
+    reach = isqrt(model.view2)
+    offsets = (2 * reach + 1) ** 2
+    if offsets > MAX_VIEW_OFFSETS:
+        raise InvalidInput(
+            f"q={model.parameters.q}: a robot sees {offsets:,} lattice offsets (rad_v={model.parameters.rad_v}, "
+            f"q={model.parameters.q}), more than {MAX_VIEW_OFFSETS:,} fit in memory; expected a smaller --q"
+        )
+    w, h = window
+    if robots[1] >= 2 and (w - 1) ** 2 + (h - 1) ** 2 < model.apart2:
+        raise InvalidInput(
+            f"window={w}x{h}: no two robots fit at distance >= delta={model.parameters.delta} "
+            f"({model.parameters.q} lattice points per radius); expected a larger --window"
+        )
+
+
+def check(
+    model: Model,
+    robots: tuple[int, int] | None = None,
+    window: tuple[int, int] | None = None,
+    *,
+    progress: ProgressFn | None = None,
+    **settings: Any,
+) -> CheckResult:
+    """Check every lemma for every robot count in ``robots`` (bounds default to the model's; ``settings``
+    as :meth:`CheckPlan.of`)."""
+    plan = CheckPlan.of(model, robots, window, **settings)
+    return plan.result(list(plan.searches(progress)))
+
+
+@dataclass(frozen=True, slots=True)
+class CheckPlan:
+    """A validated check: the model and its bounds, run one robot count at a time (so an interrupted
+    run keeps the counts it finished)."""
+
+    model: Model
+    robots: tuple[int, int]
+    window: tuple[int, int]
+    max_states: int | None
+    """``None``: the memory budget is the only limit."""
+    engine: str
+    after_violation: str
+    bound: tuple[int, int] | None = None
+    """The exploration bound; ``None``: the window."""
+    max_memory: int = 0
+    """Bytes the search's arrays may hold (0: no limit)."""
+    workers: int = 1
+    cluster: str | None = None
+    checkpoint: Path | None = None
+
+    @classmethod
+    def of(
+        cls,
+        model: Model,
+        robots: tuple[int, int] | None = None,
+        window: tuple[int, int] | None = None,
+        max_states: int | None = None,
+        engine: str | None = None,
+        after_violation: str = "stop",
+        *,
+        bound: tuple[int, int] | None = None,
+        max_memory: int | None = None,
+        workers: int = 1,
+        cluster: str | None = None,
+        checkpoint: Path | None = None,
+    ) -> CheckPlan:
+        """Fill the model's default bounds and reject what no search can meet, before any work.
+        ``max_memory`` defaults to a share of the machine, ``max_states`` to the model's or else to what
+        ``max_memory`` affords, ``engine`` to the system's fastest."""
+        robots = model.bounds.robots if robots is None else robots
+        window = model.bounds.window if window is None else window
+        if bound == window:
+            bound = None
+        max_memory = default_max_memory() if max_memory is None else max_memory
+        if max_states is None:
+            max_states = model.bounds.max_states
+        engine = system_for(model).default_engine if engine is None else engine
+        if engine not in ENGINES:
+            raise unknown_engine(engine)
+        if workers < 1:
+            raise InvalidInput(f"workers={workers}: expected a positive number of worker processes")
+        if cluster is not None and not re.fullmatch(r"(tcp|tls|ucx)://[A-Za-z0-9_.\-\[\]:]+:\d+", cluster):
+            raise InvalidInput(f"cluster={cluster!r}: expected a Dask scheduler address like tcp://HOST:PORT")
+        if workers > 1 or cluster is not None:
+            require_dask(f"workers={workers}" if cluster is None else f"cluster={cluster!r}")
+        engine_for(system_for(model), engine)  # a system without this engine refuses it here, before any work
+        validate_bounds(model, robots, window, max_states, engine, bound)
+        validate_resources(model, robots, window)
+        if checkpoint is not None:
+            claim_checkpoint(checkpoint, range(robots[0], robots[1] + 1))
+        return cls(
+            model, robots, window, max_states, engine, after_violation, bound, max_memory, workers, cluster,
+            checkpoint,
+        )  # fmt: skip
+
+    @property
+    def counts(self) -> range:
+        return range(self.robots[0], self.robots[1] + 1)
+
+    def searches(self, progress: ProgressFn | None = None) -> Iterator[tuple[SearchStats, list[LemmaResult]]]:
+        """One finished search per robot count, smallest first (on one Dask cluster for all of them)."""
+        if self.workers == 1 and self.cluster is None:
+            for n in self.counts:
+                yield check_robots(self, n, None, progress)
+            return
+        with Cluster(self.workers, self.cluster) as cluster:
+            for n in self.counts:
+                yield check_robots(self, n, cluster, progress)
+
+    def result(self, done: list[tuple[SearchStats, list[LemmaResult]]]) -> CheckResult:
+        """The result of the searches in ``done`` (all of them, or those finished before an interrupt)."""
+        stats = tuple(s for s, _ in done)
+        results = tuple(r for _, rs in done for r in rs)
+        complete = len(done) == len(self.counts)
+        return CheckResult(
+            self.model,
+            self.window,
+            self.max_states,
+            self.after_violation,
+            stats,
+            results,
+            complete,
+            self.bound,
+            self.max_memory,
+        )
+
+
+def initial_keys_for(system: Any, n: int, window: tuple[int, int], codec: Any) -> np.ndarray:
+    """The sorted keys (in ``codec``) of every initial configuration of ``n`` robots in ``window``."""
+    model = system.model
+    if system.fields == 2 and isinstance(codec, KeyCodec):
+        return initial_keys(n, window, model, codec)
+    states = initial_array(n, window, model)
+    return np.sort(codec.encode(system.initial(states))) if len(states) else np.zeros(0, dtype=codec.dtype)
+
+
+def check_robots(
+    plan: CheckPlan, n: int, cluster: Cluster | None = None, progress: ProgressFn | None = None
+) -> tuple[SearchStats, list[LemmaResult]]:
+    """Explore every execution of ``n`` robots under ``plan`` and give every lemma its verdict."""
+    t0 = time.perf_counter()
+    ex = explore_robots(plan, n, cluster, progress)
+    results = lemma_verdicts(ex)
+    stats = SearchStats(
+        n,
+        plan.window,
+        plan.engine,
+        ex.n_initial,
+        ex.n_states,
+        ex.n_transitions,
+        ex.escaped,
+        ex.violating_only,
+        ex.off_lattice,
+        ex.truncated,
+        time.perf_counter() - t0,
+        plan.bound,
+        ex.nbytes,
+    )
+    return stats, results
+
+
+def explore_robots(
+    plan: CheckPlan, n: int, cluster: Cluster | None = None, progress: ProgressFn | None = None
+) -> Exploration:
+    """Every execution of ``n`` robots under ``plan``: the explored transition system."""
+    model, window = plan.model, plan.window
+    bound = plan.bound or window
+    system = system_for(model)
+    codec = system.codec(n, bound)
+    if progress:
+        progress(f"n={n}: enumerating initial configurations in {window[0]}x{window[1]}", 0, 0, "")
+    initial = initial_keys_for(system, n, window, codec)
+    if progress:
+        progress(f"n={n}: {len(initial):,} initial configurations", len(initial), len(initial), "")
+    if not len(initial):
+        raise InvalidInput(
+            f"robots={n} window={window[0]}x{window[1]}: no initial configuration fits (pairwise distance >= delta "
+            "and connected); expected a larger window"
+        )
+    tick = None
+    if progress is not None:
+        report = progress
+        started = time.perf_counter()
+
+        def tick(level: int, done: int, frontier: int, states: int) -> None:
+            rate = states / max(time.perf_counter() - started, 1e-9)
+            report(f"n={n}: level {level}", done, frontier, f"{states:,} states, {rate:,.0f} states/s")
+
+    pool = None if cluster is None else cluster.shards(system, n, bound, plan.engine, plan.after_violation)
+    ex = explore_keys(
+        system,
+        n,
+        initial,
+        bound,
+        plan.engine,
+        max_states=plan.max_states,  # None: the memory budget is the only limit
+        max_bytes=plan.max_memory or None,
+        after_violation=plan.after_violation,
+        progress=tick,
+        pool=pool,
+        checkpoint=None if plan.checkpoint is None else plan.checkpoint / f"n{n}",
+        initial_window=window,
+    )
+    if pool is not None:
+        pool.close()
+    return ex
+
+
+def _result(ex: Exploration, lemma: Lemma, verdict: Verdict, reason: str = "", doc: Any = None) -> LemmaResult:
+    rounds = len(doc["rounds"]) if doc else None
+    return LemmaResult(lemma, verdict, ex.n, ex.start_window, reason, rounds, doc)
+
+
+def _bounded(ex: Exploration, lemma: Lemma, liveness: bool) -> LemmaResult:
+    """No violation found: HOLDS_WITHIN_BOUNDS, unless a bound cut the search short."""
+    if ex.limit is Limit.MAX_MEMORY:
+        return _result(
+            ex,
+            lemma,
+            Verdict.INCONCLUSIVE,
+            StopReason.MAX_MEMORY.describe(
+                f"{ex.n_states:,} states found, {ex.n_states - int(ex.expanded.sum()):,} of them unexplored; the next "
+                f"level needs about {format_size(ex.needed_bytes)}; "
+                + (
+                    f"rerun with --max-memory {format_size(ex.needed_bytes)} or more (deeper levels may need more)"
+                    if ex.needed_bytes <= machine_memory()
+                    else f"more than this machine's {format_size(machine_memory())}: share it with --cluster, or a "
+                    "smaller --bound or --window"
+                )
+            ),
+        )
+    if ex.truncated:
+        return _result(
+            ex,
+            lemma,
+            Verdict.INCONCLUSIVE,
+            StopReason.MAX_STATES.describe(
+                f"{ex.n_states:,} states found, {ex.n_states - int(ex.expanded.sum()):,} of them unexplored; "
+                f"rerun with --max-states {ex.n_states:,} or more (deeper levels may need more)"
+            ),
+        )
+    if liveness and ex.escaped:
+        off = f", {ex.off_lattice} of them off the lattice" if ex.off_lattice else ""
+        return _result(ex, lemma, Verdict.INCONCLUSIVE, StopReason.WINDOW.describe(f"{ex.escaped} transitions{off}"))
+    w, h = ex.window
+    off = f"; {ex.off_lattice} transitions off the lattice not followed" if ex.off_lattice else ""
+    iw, ih = ex.start_window
+    where = f"window {w}x{h}" if ex.initial_window is None else f"window {iw}x{ih}, bound {w}x{h}"
+    return _result(ex, lemma, Verdict.HOLDS_WITHIN_BOUNDS, f"{ex.n} robots, {where}, {ex.n_states} states{off}")
+
+
+def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
+    """Every lemma's verdict on one explored graph, witnesses replayed."""
+    out: dict[Lemma, LemmaResult] = {}
+    expanded = ex.expanded
+    for lemma in SAFETY:
+        hits = np.nonzero(expanded[ex.edge_src] & ((ex.edge_flags & lemma.flag) != 0))[0]
+        if len(hits):
+            first = hits[np.lexsort((ex.edge_action[hits], ex.edge_src[hits]))[0]]
+            doc = transition_witness(ex, int(first), lemma)
+            out[lemma] = _result(ex, lemma, Verdict.VIOLATED, f"a violating {ex.system.step_word}", doc)
+        else:
+            out[lemma] = _bounded(ex, lemma, liveness=False)
+
+    terminal = expanded & (ex.enabled == 0)
+    deadlocks = np.nonzero(terminal & ~ex.goal)[0]
+    if len(deadlocks):
+        for lemma in (Lemma.PROGRESS, Lemma.TERMINATION):
+            doc = state_witness(ex, int(deadlocks[0]), lemma)
+            out[lemma] = _result(ex, lemma, Verdict.VIOLATED, "a deadlock: no robot enabled, no line", doc)
+    else:
+        out[Lemma.PROGRESS] = _bounded(ex, Lemma.PROGRESS, liveness=False)
+        lassos = fair_cycles(ex, expanded & ~ex.goal)
+        if lassos:
+            doc = lasso_witness(lasso_run(ex, lassos[0].start, lassos[0].cycle), ex, Lemma.TERMINATION)
+            out[Lemma.TERMINATION] = _result(
+                ex, Lemma.TERMINATION, Verdict.VIOLATED, "a fair cycle never forms the line", doc
+            )
+        else:
+            out[Lemma.TERMINATION] = _bounded(ex, Lemma.TERMINATION, liveness=True)
+    out[Lemma.APPROACH] = _approach(ex, terminal)
+    return [out[lemma] for lemma in CHECKED]
+
+
+def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
+    """Lemma 5: a terminal state with a robot left of the RMA, or a fair cycle where one never moves right."""
+    candidates = np.nonzero(terminal)[0]  # only terminal states are decoded
+    xs = ex.system.array_positions(ex.state_array(candidates))[:, :, 0]
+    stuck = candidates[xs.min(axis=1) < xs.max(axis=1)]
+    if len(stuck):
+        doc = state_witness(ex, int(stuck[0]), Lemma.APPROACH)
+        return _result(ex, Lemma.APPROACH, Verdict.VIOLATED, "no robot can move and some are left of the RMA", doc)
+    lassos = fair_cycles(ex, ex.expanded)
+    for lasso in lassos[:MAX_LASSOS_TRIED]:
+        run = lasso_run(ex, lasso.start, lasso.cycle)
+        if approach_stuck(run):
+            doc = lasso_witness(run, ex, Lemma.APPROACH)
+            return _result(ex, Lemma.APPROACH, Verdict.VIOLATED, "a fair cycle where a robot never moves right", doc)
+    if lassos:
+        detail = f"{min(len(lassos), MAX_LASSOS_TRIED)} of {len(lassos)} fair cycles examined"
+        return _result(ex, Lemma.APPROACH, Verdict.INCONCLUSIVE, StopReason.CYCLE_NOT_DECISIVE.describe(detail))
+    return _bounded(ex, Lemma.APPROACH, liveness=True)
+
+
+def witness_path(directory: Path, prefix: str, lemma: Lemma, robots: int) -> Path:
+    """Where :func:`write_witnesses` puts the witness of ``lemma`` for ``robots`` robots."""
+    return child(directory, f"{prefix}{lemma.value}-n{robots}", ".json")
+
+
+def witness_paths(plan: CheckPlan, directory: Path, prefix: str) -> list[Path]:
+    """Every file a check of ``plan`` may write into ``directory`` (checked before the run)."""
+    return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in CHECKED]
+
+
+def write_witnesses(result: CheckResult, directory: Path, prefix: str) -> dict[tuple[str, int], str]:
+    """Write every witness as ``DIRECTORY/PREFIX<lemma>-n<robots>.json``; the paths by (lemma, robots)."""
+    from ..trace.traces import write_trace
+
+    paths = {}
+    for r in result.results:
+        if r.witness is not None:
+            path = witness_path(directory, prefix, r.lemma, r.robots)
+            write_trace(r.witness, path)
+            paths[(r.lemma.value, r.robots)] = path.as_posix()
+    return paths
+
+
+def check_fingerprint(model: Model) -> str:
+    """What a check result at the model's own bounds depends on: the model and the checker's version."""
+    from ..cache import fingerprint
+
+    return fingerprint(model, "check", engine=CHECKER_VERSION)
+
+
+def check_to_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dict[str, Any]:
+    """The check result as plain data (``--json``, the report's cache)."""
+    from ..model.config import model_to_mapping
+
+    return {
+        "format": Kind.CHECK.value,
+        "complete": result.complete,
+        "model": model_to_mapping(result.model),
+        "window": list(result.window),
+        **({"bound": list(result.bound)} if result.bound is not None else {}),
+        "max_states": result.max_states,
+        "after_violation": result.after_violation,
+        "searches": [
+            {
+                "robots": s.robots,
+                "initial": s.initial,
+                "states": s.states,
+                "transitions": s.transitions,
+                "escaped": s.escaped,
+                "violating_only": s.violating_only,
+                "off_lattice": s.off_lattice,
+                "truncated": s.truncated,
+                "seconds": round(s.seconds, 3),
+                "bytes": s.nbytes,
+                "engine": s.engine,
+            }
+            for s in result.stats
+        ],
+        "lemmas": [
+            {
+                "lemma": r.lemma.value,
+                "robots": r.robots,
+                "verdict": r.verdict.value,
+                "reason": r.reason,
+                "witness_rounds": r.witness_rounds,
+                "trace": paths.get((r.lemma.value, r.robots)),
+            }
+            for r in result.results
+        ],
+    }
+
+
+__all__ = ["CheckResult", "SearchStats", "check", "check_robots", "lemma_verdicts"]

@@ -1,0 +1,82 @@
+"""Witnesses: turn a path of the explored graph into a trace, and replay it before anyone sees it.
+
+The search knows canonical array states only; a witness follows real robots. From the initial state
+(robot i = canonical index i) each step's action, given in the canonical order of its source state, is
+mapped to robot identities by canonicalising the current state, and played by the executable model
+of the transition system. The result must land on the recorded canonical state at every step and must
+replay from its JSON form; otherwise the engine and the model disagree, which is a bug of the tool
+and is raised, never reported as a counterexample.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ..errors import FatlineError
+from ..lemmas.properties import Lemma
+from ..trace.simulate import Outcome, Run
+from ..trace.traces import replayed_document
+from .search import Exploration
+
+
+class EngineDisagreement(FatlineError):
+    """The exploration and the executable model disagree on a witness (a bug of the tool)."""
+
+
+def _follow(ex: Exploration, start_id: int, steps: list[tuple[int, int]]) -> tuple[Any, list[Any]]:
+    system = ex.system
+    state = system.from_array(ex.state_array(ex.root(start_id)))
+    initial, played = system.positions(state), []
+    for sid, code in steps:
+        canon, order = system.canonical(system.to_array(state)[None])
+        if not np.array_equal(canon[0], ex.state_array(sid)):
+            raise EngineDisagreement(f"witness step from state {sid}: {state} is not that state")
+        step = system.play(state, system.action(code, order[0], state))
+        played.append(step)
+        state = step.target
+    return initial, played
+
+
+def _finish(ex: Exploration, run: Run, lemma: Lemma) -> dict[str, Any]:
+    origin = {
+        "tool": "fatline check",
+        "lemma": lemma.value,
+        "engine": ex.engine,
+        "robots": ex.n,
+        "window": list(ex.start_window),
+    }
+    if ex.initial_window is not None:
+        origin["bound"] = list(ex.window)
+    doc = replayed_document(run, origin, lemma)
+    if doc["violation"] is None or doc["violation"]["property"] != lemma:
+        raise EngineDisagreement(f"{lemma} witness: the executable model does not show the violation")
+    return doc
+
+
+def transition_witness(ex: Exploration, edge: int, lemma: Lemma) -> dict[str, Any]:
+    """A shortest path to the source of transition ``edge`` and the violating step itself."""
+    src = int(ex.edge_src[edge])
+    steps = [*ex.path(src), (src, int(ex.edge_action[edge]))]
+    initial, played = _follow(ex, src, steps)
+    return _finish(ex, Run(ex.model, initial, tuple(played), Outcome.VIOLATION), lemma)
+
+
+def state_witness(ex: Exploration, state_id: int, lemma: Lemma) -> dict[str, Any]:
+    """A shortest path to a terminal state (no robot enabled): a deadlock, or robots stuck off the RMA."""
+    initial, played = _follow(ex, state_id, ex.path(state_id))
+    outcome = Outcome.GOAL if ex.goal[state_id] else Outcome.DEADLOCK
+    return _finish(ex, Run(ex.model, initial, tuple(played), outcome), lemma)
+
+
+def lasso_run(ex: Exploration, start: int, cycle: tuple[tuple[int, int], ...]) -> Run:
+    """A shortest path to the loop's first state, then the fair loop, played by the executable model."""
+    prefix = ex.path(start)
+    initial, played = _follow(ex, start, [*prefix, *cycle])
+    return Run(ex.model, initial, tuple(played), Outcome.CYCLE, len(prefix))
+
+
+def lasso_witness(run: Run, ex: Exploration, lemma: Lemma) -> dict[str, Any]:
+    """The trace of a lasso run (from :func:`lasso_run`), replayed."""
+    return _finish(ex, run, lemma)

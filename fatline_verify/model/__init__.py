@@ -1,0 +1,1 @@
+"""The model: exact numbers and geometry, the lattice, the option catalogue, a Model and its swarm."""

@@ -1,0 +1,79 @@
+"""Predicates over a whole swarm state: the visibility graph, the goal, the initial condition.
+
+A *state* is a tuple of robot centres in global lattice coordinates; robot ``i`` is index ``i``.
+The robots do not know these coordinates: only the engine does, to apply the scheduler.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import networkx as nx
+
+from ..errors import InvalidInput
+from .config import Model
+from .geometry import collinear, dist2, width_at_most
+from .numbers import Point, show, show_point
+from .options import Goal
+
+State = tuple[Point, ...]
+
+
+def visibility_graph(state: Sequence[Point], model: Model) -> nx.Graph:
+    """ "There exists an edge ... between the robots r_i and r_j if and only if they can see each
+    other." Visibility is symmetric under every reading (it depends on the distance only)."""
+    graph = nx.Graph()
+    graph.add_nodes_from(range(len(state)))
+    for i in range(len(state)):
+        for j in range(i + 1, len(state)):
+            if model.sees(dist2(state[i], state[j])):
+                graph.add_edge(i, j)
+    return graph
+
+
+def is_connected(state: Sequence[Point], model: Model) -> bool:
+    """Whether the visibility graph is connected (a single robot is)."""
+    return len(state) <= 1 or nx.is_connected(visibility_graph(state, model))
+
+
+def is_goal(state: Sequence[Point], model: Model) -> bool:
+    """ "The robots in R will form a straight line", per the ``goal`` option."""
+    goal = model.options.goal
+    if goal is Goal.VERTICAL_LINE:
+        return len({p[0] for p in state}) <= 1
+    if goal is Goal.ANY_LINE:
+        return collinear(state)
+    return width_at_most(state, 2 * model.radius)
+
+
+def initial_problems(state: Sequence[Point], model: Model) -> list[str]:
+    """Why ``state`` breaks the paper's initial condition (empty when it meets it).
+
+    "Initially the robots are stationary and the mutual distance between two robots is at least
+    delta > 2 units" (distance exactly delta meets it) and "Initially, the graph G is assumed to be connected".
+    """
+    problems: list[str] = []
+    for i in range(len(state)):
+        for j in range(i + 1, len(state)):
+            d2 = dist2(state[i], state[j])
+            pi, pj = show_point(model.from_lattice(state[i])), show_point(model.from_lattice(state[j]))
+            where = f"robots {i} {pi} and {j} {pj}"
+            if d2 < model.contact2:
+                problems.append(f"{where} overlap (centre distance below 2)")
+            elif not model.initially_apart(d2):
+                problems.append(f"{where} are closer than delta")
+    if not problems and not is_connected(state, model):
+        problems.append("the visibility graph is not connected")
+    return problems
+
+
+def require_initial(state: Sequence[Point], model: Model) -> None:
+    """Raise :class:`InvalidInput` naming the first way ``state`` breaks the initial condition."""
+    if not state:
+        raise InvalidInput("init='': expected at least one robot position")
+    problems = initial_problems(state, model)
+    if problems:
+        delta = model.parameters.delta
+        raise InvalidInput(
+            f"init: {problems[0]}; expected pairwise distance >= delta={show(delta)} and a connected swarm"
+        )

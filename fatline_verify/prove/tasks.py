@@ -1,0 +1,216 @@
+"""Which obligations ``fatline prove`` has for a model (:func:`tasks_for`), what a result is
+(:class:`ProofResult`), and which models it refuses (:func:`check_encoded`): a decision case of the
+paper's rules (:class:`~fatline_verify.prove.smt.claims.Spec`), Lemma 1's global form, or a repaired rule
+set's leg (:class:`~fatline_verify.prove.smt.legs.LegSpec`)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..errors import InvalidInput
+from ..lemmas.properties import Lemma, Verdict
+from ..model.config import Model
+from ..model.options import Scheduler
+from ..rules import registry
+from ..rules.paper.cases import Case, moving_cases, staying_cases
+from ..rules.repaired.options import RepairProgress
+from ..schedulers.activation import encoded_schedulers
+from .smt.claims import (
+    CLOSER,
+    GLOBAL,
+    ONE_MOVER,
+    SEEN,
+    TWO_MOVERS,
+    X_NONDECREASING,
+    Spec,
+)
+from .smt.legs import LegSpec, leg_specs, missing_repairs
+
+ENCODED = encoded_schedulers()
+"""The schedulers the obligations encode: every mover decides on one shared snapshot."""
+
+
+ENCODINGS = {"paper": "the paper's decision cases", "legs": "the repaired rules' legs"}
+"""The rule-set encodings the obligations implement, by :attr:`~fatline_verify.rules.registry.RuleSet.prover`."""
+
+
+class NotEncodedModel(InvalidInput):
+    """``fatline prove`` on a model the obligations do not encode (exit 2, before any work): a scheduler
+    other than :data:`ENCODED`, or a repair (:mod:`fatline_verify.rules.repaired.algorithm`)."""
+
+
+@dataclass(frozen=True, slots=True)
+class ProofResult:
+    """One obligation's verdict."""
+
+    lemma: Lemma
+    form: str
+    rule: str
+    verdict: Verdict
+    slots: int
+    """Named robots besides r (the global form: slot robots)."""
+    any_size: bool
+    seconds: float
+    reason: str
+    smt2: str
+    witness: dict[str, Any] | None = field(default=None, repr=False, compare=False)
+    comment: str = field(default="", repr=False, compare=False)
+    case: str = "any"
+    other: str = ""
+    configuration: tuple[str, ...] = ()
+    """For a claim without a trace (``seen``, ``x-nondecreasing``, ``closer``): the replayed
+    configuration, r first, as exact ``x,y`` strings in lattice units (radii when q = 1)."""
+
+    @property
+    def key(self) -> str:
+        tail = f".and.{self.other}" if self.other else ""
+        return f"{self.lemma}/{self.form}-{self.case}{tail}"
+
+
+def row_key(row: dict[str, Any]) -> str:
+    """``lemma/form-case[.and.other]`` (rows before encoding 3 had no case: their rule stands in)."""
+    tail = f".and.{row['other']}" if row.get("other") else ""
+    return f"{row['lemma']}/{row['form']}-{row.get('case', row['rule'])}{tail}"
+
+
+DEFAULT_SLOTS = 3
+"""Slot robots of the global connectivity form, unless asked otherwise."""
+DEFAULT_TIMEOUT = 60.0
+"""Solver seconds per obligation, unless asked otherwise."""
+
+LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
+"""The lemmas the prover decides, in results order."""
+
+
+@dataclass(frozen=True, slots=True)
+class GlobalTask:
+    """Lemma 1 in its global form (the whole graph after one round)."""
+
+    lemma: Lemma = Lemma.CONNECTIVITY
+    form: str = GLOBAL
+
+    @property
+    def key(self) -> str:
+        return f"{self.lemma}/{GLOBAL}-any"
+
+
+Task = Spec | GlobalTask | LegSpec
+"""An obligation: a decision case of the paper's rules, the global form, or a repaired rule set's leg."""
+
+
+def rule_groups(cases: Sequence[Case]) -> list[tuple[str, tuple[Case, ...]]]:
+    """The moving cases grouped by rule (a second mover's obligations take one group each)."""
+    groups: dict[str, list[Case]] = {}
+    for case in cases:
+        groups.setdefault(case.rule.value, []).append(case)
+    return [(name, tuple(group)) for name, group in groups.items()]
+
+
+def check_encoded(model: Model) -> None:
+    """Refuse a model the obligations do not encode: never another scheduler's semantics, never the
+    paper's rules in place of a repaired rule set the leg obligations do not cover, never a rule set
+    without an encoding of its own (:attr:`fatline_verify.rules.registry.RuleSet.prover`)."""
+    rule_set = registry.of(model)
+    if rule_set.prover not in ENCODINGS:
+        raise NotEncodedModel(
+            f"rules={rule_set.name!r}: fatline prove has no encoding of this rule set (it encodes "
+            f"{', '.join(ENCODINGS.values())}); expected a rule set it encodes. Use fatline check {model.name}"
+        )
+    scheduler = model.options.scheduler
+    if scheduler not in ENCODED:
+        raise NotEncodedModel(
+            f"scheduler={scheduler}: fatline prove encodes rounds in which every mover decides on one shared "
+            f"snapshot ({', '.join(s.value for s in ENCODED)}); an asynchronous robot may decide on a stale view. "
+            f"Use fatline check {model.name} for this scheduler"
+        )
+    if model.options.repaired:
+        missing = missing_repairs(model)
+        if missing:
+            raise NotEncodedModel(
+                f"{', '.join(missing)} not set: fatline prove encodes a repaired rule set by its legs, which rest "
+                f"on the lock, unit steps, clear paths and kept edges together. Set them, or use fatline check "
+                f"{model.name}"
+            )
+        if model.options.repair_progress is RepairProgress.CORNER:
+            raise NotEncodedModel(
+                "repair_progress='corner': the leg obligations do not cover corner legs (right and vertical at "
+                "once, up to sqrt(2) long, so two far movers may close a gap of more than rad_v to less than 2 "
+                f"unless their neighbours rule it out); expected off or detour. Use fatline check {model.name}"
+            )
+
+
+PAPER_PART_NOTE = (
+    "Repaired model: these are the paper's rules under its readings, its repairs off. A repaired move is one leg "
+    "toward their destination (never farther right, never left of r), or a repair's own: repair-align to the "
+    "greatest x r sees, repair-approach 2 radii short of psi_right (right of r), repair-contract vertical."
+)
+"""The header line of a repaired model's per-case obligations: what they say of the repaired rules."""
+
+
+def paper_part(model: Model) -> Model:
+    """The paper's rules under ``model``'s readings (its repairs off): what the per-case obligations
+    of a repaired model encode (a repaired move is a leg toward their destination, or a repair's own)."""
+    if not model.options.repaired:
+        return model
+    from dataclasses import replace
+
+    off = {name: "off" for name in model.options.as_dict() if name.startswith("repair_")}
+    return replace(model, options=model.options.with_(**off))
+
+
+def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: bool = False) -> list[Task]:
+    """Every obligation ``prove`` decides for ``model`` and ``lemmas``, in results order.
+
+    ``two_movers``: also the two-mover obligations (one per pair of rules; searched on the lattices
+    only, as their real form is beyond the budgets tried), which ``fatline prove --two-movers`` asks for."""
+    check_encoded(model)
+    if model.options.repaired:
+        return _repaired_tasks(model, lemmas)
+    scheduler = model.options.scheduler
+    moving = moving_cases(model)
+    stays = tuple(staying_cases(model)) if scheduler is Scheduler.FSYNC else ()
+    groups = rule_groups(moving) if two_movers and scheduler is not Scheduler.CENTRALIZED else []
+    tasks: list[Task] = []
+    for lemma in lemmas:
+        if lemma in (Lemma.NO_COLLISION, Lemma.CONNECTIVITY):
+            tasks += [Spec.of(lemma, ONE_MOVER, c, stays, "o-stays" if stays else "") for c in moving]
+            tasks += [
+                Spec(lemma, TWO_MOVERS, mine, theirs, other)
+                for k, (_, mine) in enumerate(groups)
+                for other, theirs in groups[k:]
+            ]
+        if lemma is Lemma.CONNECTIVITY:
+            tasks += [Spec.of(lemma, CLOSER, c) for c in moving if c.rule.value in CLOSER_RULES]
+            tasks.append(GlobalTask())
+        if lemma is Lemma.RMA_FIXED:
+            tasks += [Spec.of(lemma, SEEN, c) for c in moving]
+        if lemma is Lemma.APPROACH:
+            tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
+    return tasks
+
+
+def _repaired_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
+    """A repaired model's obligations: the leg obligations of the collision and connectivity lemmas
+    (:mod:`fatline_verify.prove.smt.legs`), and the per-case claims ``seen`` and ``x-nondecreasing`` of the
+    paper's rules under its readings (:func:`paper_part`; the legs' rightward horizontal rests on
+    the latter)."""
+    moving = moving_cases(paper_part(model))
+    tasks: list[Task] = []
+    for lemma in lemmas:
+        tasks += leg_specs((lemma,))
+        if lemma is Lemma.RMA_FIXED:
+            tasks += [Spec.of(lemma, SEEN, c) for c in moving]
+        if lemma is Lemma.APPROACH:
+            tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
+    return tasks
+
+
+CLOSER_RULES = ("scenario-1", "scenario-2", "scenario-3", "uncovered-search")
+"""The rules Lemma 1's proof argues about ("under scenario 2 and 3 ... it becomes closer")."""
+
+
+def task_key(task: Task) -> str:
+    """``lemma/form-case[.and.other]``: how results rows and witness files name an obligation."""
+    return task.key

@@ -1,0 +1,464 @@
+"""Can *any* rule set of the repaired family bring a swarm to a line? Reachability over every leg.
+
+The checker judges one rule set: from each initial configuration, every activation of *its*
+decisions. When liveness fails there, two different things may be wrong: the rules chose badly
+(another rule set could do better), or the safety mechanism itself leaves no way to the line. This
+module tells them apart. The **family** is the moves of the classes the repaired rule set's safety
+proof covers (:mod:`fatline_verify.prove.smt.legs`), on the lattice and never across the RMA (Lemma 3): a
+robot that sees no robot strictly left of it (``repair_lock``)
+makes one leg of a proved class that :func:`fatline_verify.rules.repaired.algorithm.allowed` passes (clear of every
+robot it sees, every edge kept or bridged), ``k`` lattice units long, ``1 <= k <= q`` (one radius
+at most):
+
+- ``right`` (the ``horizontal`` class): not past the greatest x it sees, so never across the RMA;
+- ``vertical`` (the ``top`` and ``bottom`` classes): up or down, seeing no robot above it on its
+  vertical; or up, seeing robots above it there and none below, ending at least 3 radii below each.
+
+Whatever a rule set of the family decides, each of its moves is one of these legs. So the family's
+**round graph** (from a state, every set of robots each taking any of its legs at once) holds every
+execution of every such rule set, oblivious or not, even one with memory, or a planner choosing
+each robot's leg knowing the whole swarm. An initial configuration from which no state on one
+vertical is reachable in that graph is one that **no rule set of the family** brings to a line:
+an exact, rule-free statement, found by exhaustive search. (The converse does not hold: a line
+that can be reached still needs a rule set that finds the way from what each robot sees.)
+
+*What-if* kinds (:class:`Kind`) add legs the safety proof does **not** cover, to ask which kind of
+leg a live repair would need: ``left`` (one radius or less left, by a robot that sees one right of
+it, so never off the RMA) and ``corner`` (right and
+vertically at once, as ``repair_progress = corner``: its edge tests are used).
+
+The search runs in two phases. Rounds with one mover are a subgraph of the round graph and far
+cheaper: an initial configuration that reaches a line there reaches one in the round graph. Only
+the others are searched again with every set of movers at once. States are kept up to translation;
+the legs keep the swarm connected (proved), so finitely many states are reachable and nothing is cut
+off. Every round is also played through the executable model's own checks (collisions along the
+paths, the graph, the RMA: :mod:`fatline_verify.schedulers.round`) before it is followed; one that fails them
+is counted and not followed (none is expected of the proved legs; with what-if legs it keeps the
+search to safe rounds). Each stuck configuration is searched again on its own
+(:func:`confirm_stuck`), and with ``witnesses`` a shortest way to a line from every other one is
+played again by :func:`fatline_verify.schedulers.round.play_round` (:func:`replay_witness`).
+
+*Deadlocks for every algorithm* (:func:`universal_deadlock`) need neither the family nor the search:
+a configuration where each robot, alone with the robots it sees, can make no move of at most one
+radius without a collision or a split is left as it is by every safe algorithm of such moves.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass, field, replace
+from enum import StrEnum
+from itertools import combinations, product
+
+from ..check.initial import initial_array
+from ..model.config import Model
+from ..model.numbers import Point
+from ..model.options import Goal
+from ..model.swarm import is_goal
+from ..rules.paper.algorithm import ORIGIN, Decision, Rule
+from ..rules.repaired.algorithm import allowed, locked
+from ..rules.repaired.options import RepairLock, RepairProgress
+from ..schedulers.activation import round_scheduler
+from ..schedulers.round import closest_dist2, collides, collisions, disconnection, play_round, rma_violations, snapshot
+
+State = tuple[Point, ...]
+Leg = tuple[Point, bool]
+"""A leg's end relative to the robot, and whether it is the bottom's contraction (``bottom_up``)."""
+Moves = tuple[tuple[int, Point], ...]
+"""One round: each mover's index in the state and the end of its leg, relative to it."""
+
+
+class Kind(StrEnum):
+    """A kind of leg the family may take."""
+
+    RIGHT = "right"
+    """Proved: the ``horizontal`` class."""
+    VERTICAL = "vertical"
+    """Proved: the ``top`` and ``bottom`` classes."""
+    LEFT = "left"
+    """What-if: one radius or less left, by a robot that sees one right of it (no leg obligation covers it)."""
+    CORNER = "corner"
+    """What-if: right and vertically at once, as ``repair_progress = corner`` (up to sqrt(2) radii long)."""
+
+
+PROVED = frozenset({Kind.RIGHT, Kind.VERTICAL})
+WHAT_IF = (Kind.LEFT, Kind.CORNER)
+
+
+def family_model(model: Model, kinds: frozenset[Kind]) -> Model:
+    """The model whose ``repairs.allowed`` judges the legs: with ``corner``, its edge tests allow for
+    each robot on r's vertical being on a corner leg (``repair_progress = corner``)."""
+    if Kind.CORNER in kinds and model.options.repair_progress is not RepairProgress.CORNER:
+        return replace(model, options=model.options.with_(repair_progress=RepairProgress.CORNER))
+    return model
+
+
+def family_legs(snap: tuple[Point, ...], model: Model, kinds: frozenset[Kind] = PROVED) -> tuple[Leg, ...]:
+    """Every leg of ``kinds`` that a robot seeing ``snap`` may make (module docstring), in lattice units
+    of ``model`` (one radius is ``model.radius`` units)."""
+    if not snap or locked(snap):
+        return ()
+    rho = model.radius
+    right = int(max(c[0] for c in snap))  # lattice states: whole units
+    above = [c[1] for c in snap if c[0] == 0 and c[1] > 0]
+    below = [c[1] for c in snap if c[0] == 0 and c[1] < 0]
+    room = int(min(above)) - 3 * rho if above else 0
+    tries: list[Leg] = []
+    if Kind.RIGHT in kinds:
+        tries += [((k, 0), False) for k in range(1, min(rho, right) + 1)]
+    if Kind.VERTICAL in kinds:
+        if not above:
+            tries += [((0, k), False) for k in range(-rho, rho + 1) if k]
+        elif not below:
+            tries += [((0, k), True) for k in range(1, min(rho, room) + 1)]
+    if Kind.LEFT in kinds and right > 0:  # a robot that may be on the RMA may not leave it (Lemma 3)
+        tries += [((-k, 0), False) for k in range(1, rho + 1)]
+    if Kind.CORNER in kinds:
+        for k in range(1, min(rho, right) + 1):
+            if below and not above:
+                tries += [((k, -j), False) for j in range(1, rho + 1)]
+            elif above and not below:
+                tries += [((k, j), True) for j in range(1, min(rho, room) + 1)]
+    return tuple((end, up) for end, up in tries if allowed(end, (ORIGIN, end), snap, model, bottom_up=up))
+
+
+def canonical(state: Iterable[Point]) -> State:
+    """``state`` translated to min x = min y = 0, robots sorted: the form states are kept in."""
+    pts = list(state)
+    x0 = min(p[0] for p in pts)
+    y0 = min(p[1] for p in pts)
+    return tuple(sorted((x - x0, y - y0) for x, y in pts))
+
+
+def moved(state: State, moves: Moves) -> State:
+    """``state`` after ``moves`` (not canonical)."""
+    ends = dict(moves)
+    return tuple((x + ends[i][0], y + ends[i][1]) if i in ends else (x, y) for i, (x, y) in enumerate(state))
+
+
+class Family:
+    """The family's rounds on lattice states of ``model``; each view's legs are computed once."""
+
+    def __init__(self, model: Model, kinds: frozenset[Kind] = PROVED) -> None:
+        self.kinds = kinds
+        self.model = family_model(model, kinds)
+        self._legs: dict[tuple[Point, ...], tuple[Leg, ...]] = {}
+
+    def legs(self, state: State, i: int) -> tuple[Leg, ...]:
+        snap = snapshot(state, i, self.model)
+        got = self._legs.get(snap)
+        if got is None:
+            got = self._legs[snap] = family_legs(snap, self.model, self.kinds)
+        return got
+
+    def safe(self, state: State, moves: Moves) -> bool:
+        """Whether a round collides nobody, keeps the graph connected and nobody crosses the RMA, by the
+        executable model's own checks (:mod:`fatline_verify.schedulers.round`). Pairs too far apart to meet
+        (more than two radii plus both legs) are not measured."""
+        m = self.model
+        ends = dict(moves)
+        after = moved(state, moves)
+        reach2 = 24 * m.radius * m.radius  # (2 + 2 sqrt(2))^2 < 24 radii^2: the longest legs are corners
+        for i, j in combinations(range(len(state)), 2):
+            if i not in ends and j not in ends:
+                continue
+            (xi, yi), (xj, yj) = state[i], state[j]
+            if (xi - xj) ** 2 + (yi - yj) ** 2 > reach2:
+                continue
+            pi = (state[i], after[i]) if i in ends else None
+            pj = (state[j], after[j]) if j in ends else None
+            if collides(closest_dist2(pi, pj, state[i], state[j], m), m):
+                return False
+        return disconnection(state, after, m) is None and not rma_violations(state, after)
+
+    def one_mover(self, state: State) -> Iterator[Moves]:
+        """Rounds with exactly one mover."""
+        for i in range(len(state)):
+            for end, _ in self.legs(state, i):
+                yield ((i, end),)
+
+    def any_movers(self, state: State) -> Iterator[Moves]:
+        """Rounds with any non-empty set of movers, each taking any of its legs."""
+        options = [[ORIGIN, *(end for end, _ in self.legs(state, i))] for i in range(len(state))]
+        for ends in product(*options):
+            round_ = tuple((i, e) for i, e in enumerate(ends) if e != ORIGIN)
+            if round_:
+                yield round_
+
+
+Rounds = Callable[[State], Iterable[Moves]]
+
+CONFIRM = 100
+"""Stuck configurations searched again on their own per robot count, evenly spread (all with ``witnesses``):
+each search starts afresh, so thousands of them cost far more than the search that found them."""
+
+
+@dataclass
+class _Graph:
+    """The closure of some states under ``rounds``, kept as reverse edges (canonical states)."""
+
+    rounds: Rounds
+    safe: Callable[[State, Moves], bool]
+    """Whether a round is safe; unsafe rounds are counted, not followed."""
+    parents: dict[State, set[State]] = field(default_factory=dict)
+    unsafe: int = 0
+
+    def close(self, roots: Iterable[State]) -> None:
+        queue = deque(s for s in roots if s not in self.parents)
+        for s in queue:
+            self.parents.setdefault(s, set())
+        while queue:
+            state = queue.popleft()
+            for moves in self.rounds(state):
+                nxt = canonical(moved(state, moves))
+                if nxt == state:
+                    continue
+                if not self.safe(state, moves):
+                    self.unsafe += 1
+                    continue
+                fresh = nxt not in self.parents
+                self.parents.setdefault(nxt, set()).add(state)
+                if fresh:
+                    queue.append(nxt)
+
+    def distances(self, goal: Callable[[State], bool]) -> dict[State, int]:
+        """Rounds to the nearest ``goal`` state, for every state of the closure that reaches one."""
+        dist = {s: 0 for s in self.parents if goal(s)}
+        queue = deque(dist)
+        while queue:
+            s = queue.popleft()
+            for p in self.parents[s]:
+                if p not in dist:
+                    dist[p] = dist[s] + 1
+                    queue.append(p)
+        return dist
+
+
+@dataclass(frozen=True)
+class ReachResult:
+    """What :func:`reach` found for ``n`` robots of ``model`` (at its ``q``) in ``window``."""
+
+    model: Model
+    kinds: frozenset[Kind]
+    n: int
+    window: tuple[int, int]
+    initial: int
+    """Initial configurations, up to translation."""
+    one_mover: int
+    """Of them, those that reach a line by rounds of one mover."""
+    stuck: tuple[State, ...]
+    """Those that reach no line by any rounds of the family: no rule set of the family is live there."""
+    states: tuple[int, int]
+    """States explored by each phase."""
+    witnesses: dict[State, list[tuple[State, Moves]]] = field(repr=False)
+    """For each initial configuration that reaches a line, a shortest way there (one phase's rounds)."""
+    confirmed: int = 0
+    """States of the searches that confirmed stuck configurations on their own (:func:`confirm_stuck`)."""
+    confirmed_configurations: int = 0
+    """How many stuck configurations were searched again (:data:`CONFIRM`, evenly spread; all with ``witnesses``)."""
+    replayed: int | None = None
+    """Rounds of the ways to a line replayed by :func:`replay_witness` (``None``: not asked)."""
+    unsafe: int = 0
+    """Rounds that would collide, split the swarm or cross the RMA (counted, not followed; none is
+    expected of the proved legs)."""
+    universal: tuple[State, ...] = ()
+    """Initial configurations that are deadlocks for every algorithm of one-radius lattice moves
+    (:func:`universal_deadlock`), whatever its legs, lock or rules."""
+
+    @property
+    def reached(self) -> int:
+        return self.initial - len(self.stuck)
+
+
+def _path(graph: _Graph, dist: dict[State, int], start: State) -> list[tuple[State, Moves]]:
+    """A shortest way from ``start`` to a goal state, as ``(state, round)`` steps."""
+    out = []
+    state = start
+    while dist[state]:
+        for moves in graph.rounds(state):
+            nxt = canonical(moved(state, moves))
+            # an edge of the graph only: an unsafe round may lead to the same state
+            if dist.get(nxt) == dist[state] - 1 and graph.safe(state, moves):
+                out.append((state, moves))
+                state = nxt
+                break
+        else:  # pragma: no cover - distances come from the same rounds
+            raise AssertionError(f"no step down from {state}")
+    return out
+
+
+def starts(model: Model, n: int, window: tuple[int, int]) -> list[State]:
+    """Every initial configuration of ``n`` robots in ``window``, canonical (the checker's own list)."""
+    return [canonical(tuple((int(x), int(y)) for x, y in row)) for row in initial_array(n, window, model)]
+
+
+def reach(
+    model: Model,
+    n: int,
+    window: tuple[int, int],
+    kinds: frozenset[Kind] = PROVED,
+    *,
+    witnesses: bool = False,
+) -> ReachResult:
+    """The two-phase search of the module docstring over every initial configuration of ``n`` robots in
+    ``window``; with ``witnesses``, a shortest way to a line for each that has one."""
+    family = Family(model, kinds)
+
+    def goal(s: State) -> bool:
+        return is_goal(s, family.model)
+
+    first = starts(model, n, window)
+    single = _Graph(family.one_mover, family.safe)
+    single.close(first)
+    dist1 = single.distances(goal)
+    hard = [s for s in first if s not in dist1]
+    full = _Graph(family.any_movers, family.safe)
+    full.close(hard)
+    dist2 = full.distances(goal)
+    paths: dict[State, list[tuple[State, Moves]]] = {}
+    if witnesses:
+        paths = {s: _path(single, dist1, s) for s in first if s in dist1}
+        paths |= {s: _path(full, dist2, s) for s in hard if s in dist2}
+    stuck = tuple(sorted(s for s in hard if s not in dist2))
+    again = stuck if witnesses or len(stuck) <= CONFIRM else stuck[:: -(-len(stuck) // CONFIRM)]
+    confirmed = sum(confirm_stuck(s, family) for s in again)
+    replayed = None
+    if witnesses:
+        replayed = 0
+        for s, steps in paths.items():
+            problems = replay_witness(s, steps, family)
+            if problems:
+                raise AssertionError(f"the way to a line from {s} does not replay: {problems[0]}")
+            replayed += len(steps)
+    states = (len(single.parents), len(full.parents))
+    return ReachResult(
+        family.model,
+        kinds,
+        n,
+        window,
+        len(first),
+        len(first) - len(hard),
+        stuck,
+        states,
+        paths,
+        confirmed,
+        len(again),
+        replayed,
+        single.unsafe + full.unsafe,
+        tuple(s for s in first if not goal(s) and universal_deadlock(s, family.model) is not None)
+        if alone(model)
+        else (),
+    )
+
+
+def replay_witness(start: State, steps: list[tuple[State, Moves]], family: Family) -> list[str]:
+    """Problems with a way to a line (empty when it is one), checked apart from the search: each round
+    is played by :func:`fatline_verify.schedulers.round.play_round` (collisions along the paths, the graph,
+    the RMA), each mover's leg is one of its legs, and the last state is on one vertical."""
+    m = family.model
+    problems: list[str] = []
+    state = start
+    for k, (at, moves) in enumerate(steps):
+        if canonical(state) != at:
+            return [*problems, f"round {k}: starts from {canonical(state)}, not {at}"]
+        state = at  # the round's robot indices are those of the canonical state
+        for i, end in moves:
+            snap = snapshot(state, i, m)
+            if locked(snap) and m.options.repair_lock is RepairLock.LEFT_FIRST:
+                problems.append(f"round {k}: robot {i} at {state[i]} is held by the lock")
+            if end not in {e for e, _ in family.legs(state, i)}:
+                problems.append(f"round {k}: robot {i} at {state[i]} has no leg to {end}")
+        decisions = {i: Decision(Rule.REPAIR_DETOUR, end, (ORIGIN, end), ()) for i, end in moves}
+        result = play_round(state, list(decisions), m, decisions)
+        problems += [f"round {k}: {v}" for v in result.violations]
+        state = result.after
+    if not is_goal(state, m):
+        problems.append(f"ends off a line: {state}")
+    return problems
+
+
+def confirm_stuck(start: State, family: Family) -> int:
+    """The number of states reachable from ``start`` by any rounds of ``family``, searched afresh;
+    raises if one of them is on a line (the search's answer would be wrong)."""
+    graph = _Graph(family.any_movers, family.safe)
+    graph.close([start])
+    on_line = [s for s in graph.parents if is_goal(s, family.model)]
+    if on_line:
+        raise AssertionError(f"{start} reaches the line {on_line[0]}")
+    return len(graph.parents)
+
+
+def unit_legs(model: Model) -> tuple[Point, ...]:
+    """Every move of at most one radius that ends on ``model``'s lattice (at ``q = 1``: one unit along an
+    axis), in any direction."""
+    rho = model.radius
+    span = range(-rho, rho + 1)
+    return tuple((a, b) for a in span for b in span if (a, b) != ORIGIN and a * a + b * b <= rho * rho)
+
+
+def alone(model: Model) -> bool:
+    """Whether the model's scheduler may activate one robot alone (what :func:`universal_deadlock` needs):
+    SSYNC and centralized, not FSYNC (the scheduler object says: :attr:`RoundScheduler.alone`)."""
+    return round_scheduler(model.options.scheduler).alone
+
+
+def universal_deadlock(state: State, model: Model) -> list[tuple[int, Point, str]] | None:
+    """Whether ``state`` is a deadlock for **every** algorithm of oblivious robots that do not know how many
+    they are, whose moves are straight and at most one radius long and stay on the lattice, and that
+    never lets a swarm collide or split under a scheduler that may activate one robot alone (SSYNC,
+    centralized: :func:`alone`); lock, rules and family aside.
+
+    The argument: a robot decides on what it sees. Take robot i and only the robots it sees: a legal
+    swarm (a star around i, so connected), where i sees exactly what it sees in ``state``, so it makes
+    the same decision. If each of its moves there, i alone active, collides or splits that swarm
+    (:func:`fatline_verify.schedulers.round.collisions`, ``disconnection``), a safe algorithm has i stay; if that
+    holds for every robot, none moves in ``state``. Returns one row per robot and move, ``(robot, move,
+    what breaks)``, or ``None`` when some move is safe there."""
+    rows = []
+    for i in range(len(state)):
+        seen = snapshot(state, i, model)
+        star = (ORIGIN, *seen)
+        for end in unit_legs(model):
+            hits = collisions(star, {0: (ORIGIN, end)}, model)
+            split = disconnection(star, (end, *seen), model)
+            if not hits and split is None:
+                return None
+            rows.append((i, end, "collides" if hits else "splits the swarm"))
+    return rows
+
+
+def refuse(model: Model) -> None:
+    """Bad input, before any work: a model without the repairs the family's legs are proved under, one
+    ``fatline prove`` refuses (ASYNC, corner legs), or another goal than one vertical."""
+    from ..errors import InvalidInput
+    from ..prove.smt.legs import missing_repairs
+    from ..prove.tasks import check_encoded
+
+    missing = missing_repairs(model)
+    if missing:
+        raise InvalidInput(
+            f"model={model.name!r}: the family's legs are those the repaired rule set's proof covers; "
+            f"expected a model with {', '.join(missing)} (e.g. repaired)"
+        )
+    check_encoded(model)  # what fatline prove refuses (ASYNC, corner legs) has no proved legs to search
+    if model.options.goal is not Goal.VERTICAL_LINE:
+        raise InvalidInput(
+            f"goal={model.options.goal}: the family's search looks for the robots on one vertical; expected "
+            f"goal={Goal.VERTICAL_LINE}"
+        )
+
+
+__all__ = [
+    "PROVED",
+    "WHAT_IF",
+    "Family",
+    "Kind",
+    "ReachResult",
+    "canonical",
+    "confirm_stuck",
+    "family_legs",
+    "reach",
+    "refuse",
+    "replay_witness",
+]

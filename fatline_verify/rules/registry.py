@@ -1,0 +1,146 @@
+"""Rule sets by name: what a robot decides from what it sees, one registered entry each.
+
+A model file names its rule set at the top level (``rules = "paper"``). A rule set declares the
+options it reads (the paper's readings belong to the paper's rule set; a rule set of one's own reads
+none of them), its decision function, how its pictures are drawn and whether the prover encodes it:
+``fatline prove`` refuses a rule set without an encoding, by construction, rather than proving it
+against another rule set's case table.
+
+Rule sets come from this package (:data:`BUILTIN`) and from installed packages that declare an entry
+point in the group ``fatline.plugins`` (see the README, "Your own rule set"): the entry point names a
+module whose import calls :func:`register`, or a callable that does when called.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from importlib import metadata
+from typing import Any
+
+from ..errors import InvalidModel
+
+Model = Any
+"""A :class:`fatline_verify.model.config.Model` (not imported: the model package imports this one)."""
+Point = tuple[Any, Any]
+
+Decide = Callable[[Sequence[Point], Model], Any]
+"""``decide(snapshot, model) -> Decision``: the robot at the origin, ``snapshot`` the robots it sees
+(relative positions, lattice units). The result needs ``rule``, ``destination``, ``path`` and
+``moves`` as :class:`fatline_verify.rules.paper.algorithm.Decision` has them."""
+
+MODEL_OPTIONS = frozenset({"scheduler", "motion", "timing", "contact", "goal"})
+"""Options every rule set takes: the scheduler and the round's semantics, not a rule's reading."""
+
+GROUP = "fatline.plugins"
+"""The entry-point group a plug-in package declares."""
+
+BUILTIN = ("fatline_verify.rules.paper.rule_set", "fatline_verify.rules.repaired.rule_set")
+"""The modules that register this package's own rule sets."""
+
+
+@dataclass(frozen=True, slots=True)
+class RuleSet:
+    """One rule set: its name, its decision function and what it declares about itself."""
+
+    name: str
+    decide: Decide = field(repr=False)
+    summary: str
+    options: frozenset[str] = frozenset()
+    """The options of the catalogue it reads, beside :data:`MODEL_OPTIONS`; a model setting any other
+    option is refused."""
+    prover: str | None = None
+    """The prover's encoding of these rules (``"paper"``: the paper's decision cases; ``"legs"``: the
+    leg obligations of the repaired rules); ``None``: ``fatline prove`` refuses the rule set."""
+    bands: bool = False
+    """Whether pictures shade the acting robot's bands A ... I (the paper's sets)."""
+    labels: dict[str, str] = field(default_factory=dict, repr=False, compare=False)
+    """A short text per rule label the decision function returns (for traces read aloud)."""
+
+    def accepts(self, option: str) -> bool:
+        """Whether a model of this rule set may set ``option``."""
+        return option in MODEL_OPTIONS or option in self.options
+
+
+_REGISTRY: dict[str, RuleSet] = {}
+_loaded = False
+
+
+def register(rule_set: RuleSet) -> RuleSet:
+    """Add ``rule_set`` (once per name: registering another under a taken name is an error)."""
+    known = _REGISTRY.get(rule_set.name)
+    if known is not None and known != rule_set:
+        raise ValueError(f"rule set {rule_set.name!r} is registered twice")
+    _REGISTRY[rule_set.name] = rule_set
+    return rule_set
+
+
+def _load() -> None:
+    global _loaded
+    if _loaded:
+        return
+    _loaded = True
+    for module in BUILTIN:
+        importlib.import_module(module)
+    load_plugins()
+
+
+def load_plugins() -> None:
+    """Import every ``fatline.plugins`` entry point (a module registers on import; a callable is called)."""
+    for ep in metadata.entry_points(group=GROUP):
+        try:
+            obj = ep.load()
+        except Exception as exc:  # a broken plug-in is named, not a traceback
+            why = f"{exc.__class__.__name__}: {exc}"[:200]
+            raise InvalidModel(f"plugin {ep.name}={ep.value!r}: cannot be loaded ({why})") from None
+        if callable(obj):
+            obj()
+
+
+def names() -> tuple[str, ...]:
+    """Every registered rule set's name, sorted."""
+    _load()
+    return tuple(sorted(_REGISTRY))
+
+
+def get(name: str) -> RuleSet:
+    """The rule set called ``name``, or a one-line :class:`InvalidModel`."""
+    _load()
+    try:
+        return _REGISTRY[name]
+    except KeyError:
+        raise InvalidModel(f"rules={name!r}: unknown rule set; expected one of {', '.join(names())}") from None
+
+
+def of(model: Model) -> RuleSet:
+    """The rule set ``model`` names."""
+    return get(model.rules)
+
+
+def decide(snapshot: Sequence[Point], model: Model) -> Any:
+    """Compute for the robot at the origin: the model's own replacement (seeded-bug tests) or its rule set's."""
+    if model.algorithm is not None:
+        return model.algorithm(snapshot, model)
+    return of(model).decide(snapshot, model)
+
+
+def decider(model: Model) -> Decide:
+    """The decision function of ``model``, looked up once (engines call it per snapshot)."""
+    return model.algorithm or of(model).decide
+
+
+__all__ = [
+    "BUILTIN",
+    "GROUP",
+    "MODEL_OPTIONS",
+    "Decide",
+    "RuleSet",
+    "decide",
+    "decider",
+    "get",
+    "load_plugins",
+    "names",
+    "of",
+    "register",
+]

@@ -1,0 +1,1 @@
+"""Schedulers: the transition systems (SSYNC, FSYNC, centralized, ASYNC) and the round's semantics."""

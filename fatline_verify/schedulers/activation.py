@@ -1,0 +1,159 @@
+"""The round schedulers: which robots may act together in one round. One object per scheduler.
+
+The paper's model: "The robots execute this cycle in semi-synchronous scheduling where an arbitrary
+set of robots look, compute and move simultaneously." Every synchronous scheduler plays rounds in
+which the active robots decide on one shared snapshot and move; they differ only in which sets may
+be active. Everything that depends on that — the checker's activation sets (scalar and vectorised),
+the fair random scheduler of ``simulate``, the check of an explicit ``--schedule``, the legality of
+a prover model — asks the scheduler's object here, so a new round scheduler is one class and one
+registry entry. (ASYNC is not a round scheduler: its steps are single look-compute or move events.)
+"""
+
+from __future__ import annotations
+
+import random
+from typing import Protocol
+
+import numpy as np
+
+from ..errors import Unsupported
+from ..model.options import Scheduler
+
+
+class RoundScheduler(Protocol):
+    """Which activation sets a scheduler allows in one round."""
+
+    kind: Scheduler
+    alone: bool
+    """Whether it may activate one robot alone while others are enabled (a deadlock for every
+    algorithm needs it: :func:`fatline_verify.repair.reach.universal_deadlock`)."""
+    encoded: bool
+    """Whether the prover's obligations encode its rounds (every mover decides on one shared snapshot)."""
+
+    def masks(self, enabled: int, n: int) -> list[int]:
+        """The activation sets offered in a state whose enabled robots are ``enabled`` (a bitmask), as
+        bitmasks in increasing order. Activating an idle robot is a self-loop, so only sets of enabled
+        robots are offered; none when no robot is enabled."""
+        ...
+
+    def valid(self, masks: np.ndarray, enabled: np.ndarray) -> np.ndarray:
+        """:meth:`masks` for a batch: ``(m, len(masks))`` bool, whether ``masks[j]`` is offered in state ``i``."""
+        ...
+
+    def forbids(self, active: tuple[int, ...], n: int) -> str | None:
+        """Why this scheduler never activates exactly ``active`` (sorted indices) among ``n`` robots, or
+        ``None`` when it may (an explicit schedule may also activate robots that would not move)."""
+        ...
+
+    def choose(self, rng: random.Random, candidates: tuple[int, ...], waiting: list[int], n: int) -> set[int]:
+        """A fair random choice among the enabled ``candidates`` (non-empty); ``waiting[i]`` counts the
+        rounds robot ``i`` has been enabled but idle. No enabled robot waits more than ``n`` rounds."""
+        ...
+
+
+def _subsets(enabled: int) -> list[int]:
+    out, sub = [], enabled
+    while sub:
+        out.append(sub)
+        sub = (sub - 1) & enabled
+    return sorted(out)
+
+
+def _shown(active: tuple[int, ...]) -> str:
+    return ",".join(map(str, active))
+
+
+class SemiSynchronous:
+    """ssync: "an arbitrary set of robots look, compute and move simultaneously" — any non-empty set."""
+
+    kind = Scheduler.SSYNC
+    alone = True
+    encoded = True
+
+    def masks(self, enabled: int, n: int) -> list[int]:
+        return _subsets(enabled)
+
+    def valid(self, masks: np.ndarray, enabled: np.ndarray) -> np.ndarray:
+        return (masks[None, :] & ~enabled[:, None]) == 0  # type: ignore[no-any-return]
+
+    def forbids(self, active: tuple[int, ...], n: int) -> str | None:
+        return None if active else "activates no robot; expected at least one robot per round"
+
+    def choose(self, rng: random.Random, candidates: tuple[int, ...], waiting: list[int], n: int) -> set[int]:
+        chosen = {i for i in candidates if rng.random() < 0.5 or waiting[i] >= n}
+        return chosen or {rng.choice(candidates)}
+
+
+class FullySynchronous:
+    """fsync: every robot in every round."""
+
+    kind = Scheduler.FSYNC
+    alone = False
+    encoded = True
+
+    def masks(self, enabled: int, n: int) -> list[int]:
+        return [enabled] if enabled else []
+
+    def valid(self, masks: np.ndarray, enabled: np.ndarray) -> np.ndarray:
+        return (masks[None, :] == enabled[:, None]) & (enabled[:, None] != 0)  # type: ignore[no-any-return]
+
+    def forbids(self, active: tuple[int, ...], n: int) -> str | None:
+        if len(active) == n:
+            return None
+        return (
+            f"activates robots {_shown(active)} of {n}; expected every robot ('all') in every round under "
+            "scheduler=fsync"
+        )
+
+    def choose(self, rng: random.Random, candidates: tuple[int, ...], waiting: list[int], n: int) -> set[int]:
+        return set(range(n))
+
+
+class Centralized:
+    """centralized: exactly one robot a round."""
+
+    kind = Scheduler.CENTRALIZED
+    alone = True
+    encoded = True
+
+    def masks(self, enabled: int, n: int) -> list[int]:
+        return [1 << i for i in range(n) if enabled >> i & 1]
+
+    def valid(self, masks: np.ndarray, enabled: np.ndarray) -> np.ndarray:
+        single = (masks & (masks - 1)) == 0
+        return ((masks[None, :] & ~enabled[:, None]) == 0) & single[None, :]  # type: ignore[no-any-return]
+
+    def forbids(self, active: tuple[int, ...], n: int) -> str | None:
+        if len(active) == 1:
+            return None
+        return (
+            f"activates {len(active)} robots ({_shown(active)}); expected exactly one robot per round under "
+            "scheduler=centralized"
+        )
+
+    def choose(self, rng: random.Random, candidates: tuple[int, ...], waiting: list[int], n: int) -> set[int]:
+        starved = [i for i in candidates if waiting[i] >= n]
+        pool = [max(starved, key=lambda i: waiting[i])] if starved else list(candidates)
+        return {rng.choice(pool)}
+
+
+ROUND_SCHEDULERS: dict[Scheduler, RoundScheduler] = {
+    s.kind: s for s in (SemiSynchronous(), FullySynchronous(), Centralized())
+}
+
+
+def round_scheduler(kind: Scheduler) -> RoundScheduler:
+    """The scheduler object of ``kind``; the one place that says which schedulers play rounds."""
+    try:
+        return ROUND_SCHEDULERS[kind]
+    except KeyError:
+        known = ", ".join(ROUND_SCHEDULERS)
+        raise Unsupported(f"scheduler={str(kind)!r}: not implemented yet; expected one of {known}") from None
+
+
+def encoded_schedulers() -> tuple[Scheduler, ...]:
+    """The schedulers whose rounds the prover's obligations encode."""
+    return tuple(kind for kind, s in ROUND_SCHEDULERS.items() if s.encoded)
+
+
+__all__ = ["ROUND_SCHEDULERS", "RoundScheduler", "encoded_schedulers", "round_scheduler"]

@@ -1,0 +1,1 @@
+"""Traces: running a swarm, the versioned trace format and its replay."""
