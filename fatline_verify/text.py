@@ -17,7 +17,7 @@ from fractions import Fraction
 from functools import cache
 from typing import Any
 
-from .lemmas.properties import CHECKED, Lemma
+from .lemmas.properties import Lemma
 from .model.config import Model
 from .model.numbers import Point, format_number, parse_number
 from .model.options import CATALOGUE, Options
@@ -400,7 +400,7 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
     )
     lines.append("")
     rows = []
-    for lemma in CHECKED:
+    for lemma in dict.fromkeys(x.lemma for x in result.results):  # the paper's, then registered ones
         for r in (x for x in result.results if x.lemma is lemma):
             trace = trace_paths.get((lemma.value, r.robots), "")
             witness = "" if r.witness_rounds is None else f"{r.witness_rounds} {word}s"
@@ -423,7 +423,8 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
     outside, scope = ("window", "window") if result.bound is None else ("exploration bound", "window and bound")
     lines += [
         f"Columns: initial = initial configurations up to translation; escaped = successors outside the {outside} "
-        f"(not explored);{off} violating-only = states reached only through a violating {word}; witness = {word}s "
+        f"(not explored);{off} violating-only = violating {word}s into a state no other {word} reaches "
+        f"(counted per {word}, not per state; not explored); witness = {word}s "
         "in the shortest witness (replayed before it is reported).",
         f"A lemma that holds, holds for these robot counts and this {scope} only. "
         + {

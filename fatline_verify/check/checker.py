@@ -20,6 +20,7 @@ import numpy as np
 
 from ..errors import InvalidInput
 from ..lemmas.properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason, Verdict
+from ..lemmas.registry import registered
 from ..model.config import Model
 from ..model.lattice import KeyCodec
 from ..outputs import Kind, child
@@ -386,9 +387,10 @@ def _bounded(ex: Exploration, lemma: Lemma, liveness: bool) -> LemmaResult:
 
 def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
     """Every lemma's verdict on one explored graph, witnesses replayed."""
-    out: dict[Lemma, LemmaResult] = {}
+    out: dict[Any, LemmaResult] = {}
     expanded = ex.expanded
-    for lemma in SAFETY:
+    extras = registered()
+    for lemma in (*SAFETY, *extras):
         hits = np.nonzero(expanded[ex.edge_src] & ((ex.edge_flags & lemma.flag) != 0))[0]
         if len(hits):
             first = hits[np.lexsort((ex.edge_action[hits], ex.edge_src[hits]))[0]]
@@ -414,7 +416,7 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
         else:
             out[Lemma.TERMINATION] = _bounded(ex, Lemma.TERMINATION, liveness=True)
     out[Lemma.APPROACH] = _approach(ex, terminal)
-    return [out[lemma] for lemma in CHECKED]
+    return [out[lemma] for lemma in (*CHECKED, *extras)]
 
 
 def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
@@ -444,7 +446,7 @@ def witness_path(directory: Path, prefix: str, lemma: Lemma, robots: int) -> Pat
 
 def witness_paths(plan: CheckPlan, directory: Path, prefix: str) -> list[Path]:
     """Every file a check of ``plan`` may write into ``directory`` (checked before the run)."""
-    return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in CHECKED]
+    return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in (*CHECKED, *registered())]
 
 
 def write_witnesses(result: CheckResult, directory: Path, prefix: str) -> dict[tuple[str, int], str]:
@@ -464,7 +466,8 @@ def check_fingerprint(model: Model) -> str:
     """What a check result at the model's own bounds depends on: the model and the checker's version."""
     from ..cache import fingerprint
 
-    return fingerprint(model, "check", engine=CHECKER_VERSION)
+    extras = {lemma.name: lemma.version for lemma in registered()}
+    return fingerprint(model, "check", engine=CHECKER_VERSION, **({"lemmas": extras} if extras else {}))
 
 
 def check_to_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dict[str, Any]:

@@ -26,6 +26,7 @@ from typing import Any, Protocol
 
 import numpy as np
 
+from ..lemmas.registry import CORE_FLAGS
 from ..model.config import Model
 from ..resources import BYTES_PER_STATE, PEAK_FACTOR
 from ..schedulers.base import Codec, Engine, TransitionSystem
@@ -114,8 +115,9 @@ class Exploration:
 
     @property
     def violating_only(self) -> int:
-        """Transitions whose destination was reached only through a violating round (not explored)."""
-        return int(((self.edge_dst < 0) & self.edge_fits & (self.edge_flags != 0)).sum())
+        """Violating transitions (within the bound) whose destination no followed transition reaches, so it
+        is not explored: a count of transitions, not of states (two may lead to one state)."""
+        return int(((self.edge_dst < 0) & self.edge_fits & ((self.edge_flags & CORE_FLAGS) != 0)).sum())
 
     @property
     def nbytes(self) -> int:

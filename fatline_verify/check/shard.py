@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from ..lemmas.registry import CORE_FLAGS, extra_flags, registered
 from ..model.config import Model
 from ..schedulers.base import Engine, TransitionSystem, expand_keys
 from ..schedulers.systems import system_for
@@ -80,6 +81,8 @@ class Shard:
         self.visited = np.zeros(0, dtype=self.codec.dtype)
         self.frontier = np.zeros(0, dtype=self.codec.dtype)
         self.frontier_ids = np.zeros(0, dtype=np.int64)
+        self.lemmas = registered()
+        """Registered step lemmas: judged on every transition, by one numpy pass over its positions."""
 
     def seed(self, visited: np.ndarray, frontier: np.ndarray, frontier_ids: np.ndarray) -> int:
         """Start (or resume) with these owned keys: ``visited`` sorted, the frontier a sorted subset."""
@@ -93,7 +96,10 @@ class Shard:
             ids = self.frontier_ids[start : start + batch]
             ex = expand_keys(self.system, self.engine, self.codec, self.frontier[start : start + batch])
             src = ids[ex.src]
-            flags = ex.flags.astype(np.uint8)
+            flags = ex.flags
+            if self.lemmas:
+                flags = flags | self._lemma_flags(self.frontier[start : start + batch], ex.src, ex.action)
+            flags = flags.astype(np.uint8)
             follow = followed(ex.fits, flags, self.after_violation)
             # Compact each batch at once (int32 ids and actions, uint8 flags, keys of followed
             # transitions only), so a level's peak is its compact columns, not the engine's.
@@ -122,6 +128,16 @@ class Shard:
         owner = owners(ck, self.count)
         routed = [(ck[owner == o], cs[owner == o].astype(np.int64), ca[owner == o]) for o in range(self.count)]
         return Level(**col, routed=routed)
+
+    def _lemma_flags(self, keys: np.ndarray, src: np.ndarray, action: np.ndarray) -> np.ndarray:
+        """The registered lemmas' bits of a batch's transitions: the engine's own successors, robot by
+        robot (the keyed ones are canonical), checked to be the same transitions."""
+        states = self.codec.decode(keys)
+        full = self.engine.expand(states)
+        if not (np.array_equal(full.src, src) and np.array_equal(full.action, action)):
+            raise RuntimeError("the engine's keyed and positional expansions list different transitions")
+        positions = self.system.array_positions(states)
+        return extra_flags(positions[full.src], self.system.array_positions(full.after), self.system.model, self.lemmas)
 
     def merge(self, parts: list[tuple[np.ndarray, np.ndarray, np.ndarray]]) -> tuple[np.ndarray, ...]:
         """De-duplicate the candidates routed here: the new keys (sorted), each with its least
@@ -174,8 +190,9 @@ def _in_action_order(col: dict[str, np.ndarray], after_violation: str) -> None:
 
 def followed(fits: np.ndarray, flags: np.ndarray, after_violation: str) -> np.ndarray:
     """The transitions the search follows: inside the bound and, unless ``after_violation`` is
-    ``"continue"``, violating nothing."""
-    return fits if after_violation == "continue" else fits & (flags == 0)  # type: ignore[no-any-return]
+    ``"continue"``, violating none of the paper's step lemmas (a registered lemma never prunes:
+    :mod:`fatline_verify.lemmas.registry`)."""
+    return fits if after_violation == "continue" else fits & ((flags & CORE_FLAGS) == 0)  # type: ignore[no-any-return]
 
 
 def _concat(parts: list[np.ndarray], dtype: object) -> np.ndarray:

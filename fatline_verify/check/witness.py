@@ -16,7 +16,7 @@ import numpy as np
 
 from ..errors import FatlineError
 from ..lemmas.properties import Lemma
-from ..trace.simulate import Outcome, Run
+from ..trace.simulate import Outcome, Run, outcome_after
 from ..trace.traces import replayed_document
 from .search import Exploration
 
@@ -50,7 +50,7 @@ def _finish(ex: Exploration, run: Run, lemma: Lemma) -> dict[str, Any]:
     if ex.initial_window is not None:
         origin["bound"] = list(ex.window)
     doc = replayed_document(run, origin, lemma)
-    if doc["violation"] is None or doc["violation"]["property"] != lemma:
+    if doc["violation"] is None or doc["violation"]["property"] != lemma.value:
         raise EngineDisagreement(f"{lemma} witness: the executable model does not show the violation")
     return doc
 
@@ -60,7 +60,11 @@ def transition_witness(ex: Exploration, edge: int, lemma: Lemma) -> dict[str, An
     src = int(ex.edge_src[edge])
     steps = [*ex.path(src), (src, int(ex.edge_action[edge]))]
     initial, played = _follow(ex, src, steps)
-    return _finish(ex, Run(ex.model, initial, tuple(played), Outcome.VIOLATION), lemma)
+    if isinstance(lemma, Lemma):
+        outcome = Outcome.VIOLATION
+    else:  # a registered lemma: the step breaks no safety of the model's own, and the run goes on
+        outcome = outcome_after(played[-1].target, played[-1], ex.model, ex.system) or Outcome.ROUND_LIMIT
+    return _finish(ex, Run(ex.model, initial, tuple(played), outcome), lemma)
 
 
 def state_witness(ex: Exploration, state_id: int, lemma: Lemma) -> dict[str, Any]:

@@ -17,7 +17,7 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
-from ..errors import InvalidModel
+from ..errors import InvalidModel, Unsupported
 from ..lemmas.properties import CHECKED
 from ..outputs import SLUG
 from .numbers import Number, Point, format_number, normalize, parse_number
@@ -242,6 +242,15 @@ def model_from_mapping(data: dict[str, object], *, source: str = "", default_nam
     parameters = Parameters(**params)  # type: ignore[arg-type]
     options = options_from_mapping(data.get("options", {}))  # type: ignore[arg-type]
     rules = _rules(data.get("rules"), options, data.get("options", {}))  # type: ignore[arg-type]
+    if not isinstance(options.scheduler, Scheduler):
+        from ..schedulers.activation import ROUND_SCHEDULERS, round_scheduler
+
+        try:
+            round_scheduler(options.scheduler)
+        except Unsupported:
+            known = ", ".join([*ROUND_SCHEDULERS, Scheduler.ASYNC.value])
+            name = str(options.scheduler)
+            raise InvalidModel(f"options.scheduler={name!r}: unknown scheduler; expected one of {known}") from None
     bounds_raw = data.get("bounds", {})
     if not isinstance(bounds_raw, dict):
         raise InvalidModel(f"bounds={bounds_raw!r}: expected a table")

@@ -9,6 +9,7 @@ entries live in :mod:`fatline_verify.rules.repaired.options`.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, fields, replace
 from enum import StrEnum
 from typing import Any
@@ -140,6 +141,17 @@ class Scheduler(StrEnum):
     FSYNC = "fsync"
     CENTRALIZED = "centralized"
     ASYNC = "async"
+
+
+class SchedulerName(str):
+    """The ``scheduler`` of a model that names a registered round scheduler of its own (a plug-in:
+    :mod:`fatline_verify.schedulers.activation`), not one of :class:`Scheduler`."""
+
+    __slots__ = ()
+
+    @property
+    def value(self) -> str:
+        return str(self)
 
 
 class Motion(StrEnum):
@@ -458,6 +470,10 @@ def is_repaired(options: Any) -> bool:
     return any(getattr(options, name) is not off for name, off in REPAIRS)
 
 
+SLUG_NAME = re.compile(r"[a-z][a-z0-9-]{0,39}")
+"""A plug-in's name: lower-case letters, digits and '-'."""
+
+
 def parse_reading(name: str, value: object) -> StrEnum:
     """The reading ``value`` of option ``name``, or a one-line :class:`InvalidModel`."""
     spec = CATALOGUE.get(name)
@@ -466,6 +482,8 @@ def parse_reading(name: str, value: object) -> StrEnum:
     try:
         if not isinstance(value, str):
             raise ValueError(value)
+        if name == "scheduler" and value not in spec.readings and SLUG_NAME.fullmatch(value):
+            return SchedulerName(value)  # a registered scheduler's, checked when the model is built
         return spec.enum(value)
     except ValueError:
         raise InvalidModel(

@@ -119,6 +119,11 @@ def check_encoded(model: Model) -> None:
             f"{', '.join(ENCODINGS.values())}); expected a rule set it encodes. Use fatline check {model.name}"
         )
     scheduler = model.options.scheduler
+    if scheduler not in ENCODED and scheduler is not Scheduler.ASYNC:
+        raise NotEncodedModel(
+            f"scheduler={scheduler}: fatline prove has no encoding of this scheduler's rounds (it encodes "
+            f"{', '.join(s.value for s in ENCODED)}); expected one of those. Use fatline check {model.name}"
+        )
     if scheduler not in ENCODED:
         raise NotEncodedModel(
             f"scheduler={scheduler}: fatline prove encodes rounds in which every mover decides on one shared "

@@ -137,23 +137,43 @@ class Centralized:
         return {rng.choice(pool)}
 
 
-ROUND_SCHEDULERS: dict[Scheduler, RoundScheduler] = {
-    s.kind: s for s in (SemiSynchronous(), FullySynchronous(), Centralized())
+ROUND_SCHEDULERS: dict[str, RoundScheduler] = {
+    s.kind.value: s for s in (SemiSynchronous(), FullySynchronous(), Centralized())
 }
+"""Every round scheduler by name: the paper's three, then registered ones (:func:`register`)."""
 
 
-def round_scheduler(kind: Scheduler) -> RoundScheduler:
+def register(scheduler: RoundScheduler) -> RoundScheduler:
+    """Add a round scheduler of one's own (a plug-in: one module, one call). Its ``kind`` is its name
+    (a :class:`~fatline_verify.model.options.SchedulerName`), which a model's ``scheduler`` option
+    names; it says whether it may activate one robot alone, and ``encoded`` must be false: the
+    prover's obligations encode the paper's schedulers only."""
+    name = str(scheduler.kind)
+    if name in {s.value for s in Scheduler}:
+        raise ValueError(f"scheduler {name!r}: the paper's scheduler of that name cannot be replaced")
+    if scheduler.encoded:
+        raise ValueError(f"scheduler {name!r}: encoded=True, but the prover's obligations encode no plug-in")
+    ROUND_SCHEDULERS.setdefault(name, scheduler)
+    return ROUND_SCHEDULERS[name]
+
+
+def round_scheduler(kind: Scheduler | str) -> RoundScheduler:
     """The scheduler object of ``kind``; the one place that says which schedulers play rounds."""
-    try:
-        return ROUND_SCHEDULERS[kind]
-    except KeyError:
+    found = ROUND_SCHEDULERS.get(str(kind))
+    if found is None:
+        from ..rules import registry
+
+        registry.names()  # loads the plug-ins, which may register schedulers
+        found = ROUND_SCHEDULERS.get(str(kind))
+    if found is None:
         known = ", ".join(ROUND_SCHEDULERS)
         raise Unsupported(f"scheduler={str(kind)!r}: not implemented yet; expected one of {known}") from None
+    return found
 
 
 def encoded_schedulers() -> tuple[Scheduler, ...]:
     """The schedulers whose rounds the prover's obligations encode."""
-    return tuple(kind for kind, s in ROUND_SCHEDULERS.items() if s.encoded)
+    return tuple(s.kind for s in ROUND_SCHEDULERS.values() if s.encoded)
 
 
-__all__ = ["ROUND_SCHEDULERS", "RoundScheduler", "encoded_schedulers", "round_scheduler"]
+__all__ = ["ROUND_SCHEDULERS", "RoundScheduler", "encoded_schedulers", "register", "round_scheduler"]

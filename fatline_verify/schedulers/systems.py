@@ -8,9 +8,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from ..errors import Unsupported
 from ..model.config import Model
 from ..model.options import Scheduler
+from .activation import round_scheduler
 from .base import Codec, Engine, Expansion, Step, TransitionSystem
 
 
@@ -37,11 +37,10 @@ SYSTEMS: dict[Scheduler, Callable[[Model, Scheduler], TransitionSystem]] = {
 def system_for(model: Model, scheduler: Scheduler | None = None) -> TransitionSystem:
     """The transition system of ``model`` (under its own scheduler, or ``scheduler``)."""
     kind = scheduler or model.options.scheduler
-    try:
-        make = SYSTEMS[kind]
-    except KeyError:
-        known = ", ".join(SYSTEMS)
-        raise Unsupported(f"scheduler={str(kind)!r}: not implemented; expected one of {known}") from None
+    make = SYSTEMS.get(kind)  # type: ignore[call-overload]
+    if make is None:
+        round_scheduler(kind)  # a registered round scheduler's, or a one-line Unsupported
+        make = _rounds
     return make(model, kind)
 
 

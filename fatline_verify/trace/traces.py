@@ -24,6 +24,7 @@ from typing import Any
 import jsonschema
 
 from ..errors import FatlineError, InvalidInput, InvalidTrace, TraceDidNotReproduce
+from ..lemmas import registry as lemma_registry
 from ..lemmas.properties import SAFETY, Lemma
 from ..model.config import Model, model_from_mapping, model_to_mapping
 from ..model.numbers import Point, parse_number
@@ -104,6 +105,11 @@ def derive_violation(run: Run, rounds: list[dict[str, Any]], focus: str | None) 
             focus = Lemma.PROGRESS
         else:
             return None
+    extra = lemma_registry.find(str(focus))
+    if extra is not None:
+        last = run.rounds[-1] if run.rounds else None
+        robots = extra.violators(last.before, last.after, run.model) if last else []
+        return {"property": extra.name, "robots": sorted(robots), "round": n_rounds} if robots else None
     try:
         focus = Lemma(focus)
     except ValueError:

@@ -7,6 +7,7 @@ import json
 import os
 import subprocess
 import sys
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -16,6 +17,7 @@ from fatline_verify.model.config import load_model, model_from_mapping, model_to
 from fatline_verify.rules import registry
 
 HERE = Path(__file__).parent
+ROOT = HERE.parent.parent
 SITE = HERE / "site"
 """Where the toy plug-in package is installed (its code and its ``.dist-info`` with the entry point)."""
 MODEL = HERE / "toy-step.toml"
@@ -31,10 +33,26 @@ def fatline(*argv: str, cwd: Path | None = None) -> subprocess.CompletedProcess[
 
 
 @pytest.fixture
-def toy(monkeypatch: pytest.MonkeyPatch) -> registry.RuleSet:
-    """The toy rule set, found by its entry point."""
+def installed(monkeypatch: pytest.MonkeyPatch) -> Iterator[None]:
+    """The plug-in package installed for one test: its entry points loaded, and afterwards the
+    registries and modules as they were (no other test sees the toy rule set or lemma)."""
+    from fatline_verify.lemmas import registry as lemmas
+
+    lemmas.registered()  # the package's own, loaded before the snapshot
+    rules_before, lemmas_before = dict(registry._REGISTRY), dict(lemmas._REGISTRY)
     monkeypatch.syspath_prepend(str(SITE))
     registry.load_plugins()
+    yield
+    for reg, before in ((registry._REGISTRY, rules_before), (lemmas._REGISTRY, lemmas_before)):
+        reg.clear()
+        reg.update(before)
+    for name in [m for m in sys.modules if m.split(".")[0] == "toy_fatline_plugin"]:
+        del sys.modules[name]
+
+
+@pytest.fixture
+def toy(installed: None) -> registry.RuleSet:
+    """The toy rule set, found by its entry point."""
     return registry.get("toy-step")
 
 
@@ -93,7 +111,8 @@ def test_check_runs_the_toy_and_every_engine_agrees(engine: str, tmp_path: Path)
     assert got.returncode == 1, got.stderr  # the toy deadlocks and splits the swarm
     data = json.loads(out.read_text())
     verdicts = {(r["lemma"], r["robots"]): (r["verdict"], r["witness_rounds"]) for r in data["lemmas"]}
-    assert {lemma for lemma, _ in verdicts} == set(LEMMAS)
+    assert {lemma for lemma, _ in verdicts} == {*LEMMAS, "no-left"}  # the plug-in's lemma too
+    assert verdicts[("no-left", 3)][0] == "HOLDS_WITHIN_BOUNDS"  # the toy only steps right
     assert verdicts[("connectivity", 3)] == ("VIOLATED", 1)
     assert verdicts[("progress", 2)] == ("VIOLATED", 0)
     assert verdicts[("no-collision", 3)][0] == "HOLDS_WITHIN_BOUNDS"
@@ -142,3 +161,174 @@ def test_without_the_package_the_toy_is_an_unknown_rule_set() -> None:
     )
     assert got.returncode == 2
     assert "rules='toy-step': unknown rule set; expected one of paper, repaired" in got.stderr
+
+
+# --- a step lemma of one's own (toy_fatline_plugin/lemma.py: no robot ever moves left) -------------
+
+
+def _left_step(snapshot, model):  # type: ignore[no-untyped-def]
+    """A seeded rule: a robot that sees one to its right steps one radius left."""
+    from fatline_verify.rules.paper.algorithm import Decision
+
+    rho = model.radius
+    if any(c[0] > 0 for c in snapshot):
+        return Decision("left", (-rho, 0), ((0, 0), (-rho, 0)), ())
+    return Decision("stay", (0, 0), ((0, 0),), ())
+
+
+@pytest.fixture
+def no_left(installed: None) -> object:
+    """The toy lemma, registered through its entry point."""
+    from fatline_verify.lemmas import registry as lemmas
+
+    found = lemmas.find("no-left")
+    assert found is not None
+    return found
+
+
+@pytest.mark.parametrize("engine", ["compiled", "fast", "scalar"])
+def test_every_engine_judges_a_registered_lemma_and_its_witness_replays(no_left: object, engine: str) -> None:
+    from dataclasses import replace
+
+    from fatline_verify.check.checker import check
+    from fatline_verify.lemmas.properties import Verdict
+    from fatline_verify.trace.traces import check_replay
+    from tests.conftest import make_model
+
+    model = replace(make_model(), algorithm=_left_step)
+    result = check(model, (2, 3), (7, 7), engine=engine)
+    rows = {(r.lemma.value, r.robots): r for r in result.results}
+    assert rows[("no-left", 2)].verdict is Verdict.VIOLATED
+    doc = rows[("no-left", 2)].witness
+    assert doc is not None and doc["violation"]["property"] == "no-left"
+    assert doc["violation"]["robots"] and len(doc["rounds"]) == 1
+    check_replay(doc, model)
+    # the paper's rules never move left: the lemma holds there, within the bounds
+    paper = check(make_model(), (2, 3), (7, 7), engine=engine)
+    assert {r.verdict for r in paper.results if r.lemma.value == "no-left"} == {Verdict.HOLDS_WITHIN_BOUNDS}
+
+
+def test_a_trace_of_the_registered_lemma_is_rejudged_on_replay(no_left: object) -> None:
+    from dataclasses import replace
+
+    from fatline_verify.check.checker import check
+    from fatline_verify.errors import TraceDidNotReproduce
+    from fatline_verify.trace.traces import check_replay
+    from tests.conftest import make_model
+
+    model = replace(make_model(), algorithm=_left_step)
+    doc = next(r.witness for r in check(model, (2, 2), (7, 7)).results if r.lemma.value == "no-left")
+    assert doc is not None
+    doc["violation"]["robots"] = [5]
+    with pytest.raises(TraceDidNotReproduce, match=r"violation\.robots"):
+        check_replay(doc, model)
+
+
+def test_adding_a_lemma_changes_no_other_lemma_s_evidence(tmp_path: Path) -> None:
+    """``fatline check paper`` with and without the plug-in: the same states, transitions, verdicts and
+    witnesses for every lemma of the paper; only the plug-in's row is new."""
+    runs = {}
+    for name, env_path in (("without", ""), ("with", str(SITE))):
+        out = tmp_path / f"{name}.json"
+        env = {**os.environ, "PYTHONPATH": env_path}
+        got = subprocess.run(
+            [sys.executable, "-m", "fatline_verify.cli", "check", "paper", "--robots", "2..3", "--json", str(out),
+             "--traces", str(tmp_path / name), "-q"],
+            capture_output=True, text=True, env=env, cwd=ROOT,
+        )
+        assert got.returncode == 1, got.stderr
+        data = json.loads(out.read_text())
+        searches = [{k: v for k, v in s.items() if k not in ("seconds", "bytes")} for s in data["searches"]]
+        rows = {(r["lemma"], r["robots"]): (r["verdict"], r["reason"], r["witness_rounds"]) for r in data["lemmas"]}
+        traces = {p.name: p.read_text() for p in (tmp_path / name).glob("*.json")}
+        runs[name] = (searches, rows, traces)
+    (s0, r0, t0), (s1, r1, t1) = runs["without"], runs["with"]
+    assert s0 == s1
+    assert {k: v for k, v in r1.items() if k[0] != "no-left"} == r0
+    assert {k for k in r1 if k[0] == "no-left"} == {("no-left", 2), ("no-left", 3)}
+    assert t0 == t1  # the paper's rules never move left: no new trace, and every old one byte-identical
+
+
+def test_the_committed_corpus_replays_with_the_lemma_installed() -> None:
+    corpus = sorted((ROOT / "reports" / "traces").glob("*.json"))
+    sample = corpus[:: max(1, len(corpus) // 25)]
+    env = {**os.environ, "PYTHONPATH": str(SITE)}
+    got = subprocess.run(
+        [sys.executable, "-m", "fatline_verify.cli", "replay", *map(str, sample)],
+        capture_output=True, text=True, env=env, cwd=ROOT,
+    )
+    assert got.returncode == 0, got.stdout[-2000:] + got.stderr
+    assert got.stdout.count("reproduces") == len(sample)
+
+
+def test_the_registries_are_as_before_after_a_plug_in_test() -> None:
+    """Runs after the tests above: nothing of the plug-in stays registered in this process."""
+    from fatline_verify.lemmas import registry as lemmas
+
+    assert "toy-step" not in registry.names()
+    assert lemmas.find("no-left") is None
+
+
+# --- a scheduler of one's own (toy_fatline_plugin/scheduler.py: one or two robots a round) ---------
+
+PAIRS = HERE / "pairs.toml"
+
+
+@pytest.mark.parametrize("engine", ["compiled", "fast", "scalar"])
+def test_check_runs_the_toy_scheduler_and_every_engine_agrees(engine: str, tmp_path: Path) -> None:
+    out = tmp_path / "check.json"
+    got = fatline("check", str(PAIRS), "--engine", engine, "--json", str(out), "--traces", str(tmp_path / "t"), "-q")
+    assert got.returncode == 1, got.stderr
+    data = json.loads(out.read_text())
+    assert [(s["robots"], s["states"], s["transitions"]) for s in data["searches"]] == [
+        (2, 19, 12),
+        (3, 461, 494),
+        (4, 11243, 17726),
+    ]
+    ssync = tmp_path / "ssync.json"
+    fatline("check", "paper", "--robots", "4", "--engine", engine, "--json", str(ssync), "--traces", str(tmp_path))
+    everyone = json.loads(ssync.read_text())["searches"][0]
+    # the same states as SSYNC (one robot at a time reaches them), fewer transitions (no sets of 3 or 4)
+    assert everyone["states"] == 11243 and everyone["transitions"] > 17726
+
+
+def test_the_toy_scheduler_refuses_a_round_of_three_and_replays(tmp_path: Path) -> None:
+    bad = fatline("simulate", str(PAIRS), "--init", "0,0 0,3 2,2 4,4", "--schedule", "0,1,2")
+    assert bad.returncode == 2
+    assert bad.stderr == (
+        "fatline: error: schedule='0,1,2': round 1 activates 3 robots; expected one or two under scheduler=pairs\n"
+    )
+    trace = tmp_path / "t.json"
+    sim = fatline("simulate", str(PAIRS), "--init", "0,0 0,3 2,2", "--schedule", "1", "--trace", str(trace))
+    assert sim.returncode == 1 and json.loads(trace.read_text())["model"]["options"]["scheduler"] == "pairs"
+    rep = fatline("replay", str(trace))
+    assert rep.returncode == 0 and "reproduces" in rep.stdout
+
+
+def test_prove_refuses_the_toy_scheduler_in_one_line(tmp_path: Path) -> None:
+    got = fatline("prove", str(PAIRS), "--out", str(tmp_path / "proofs"))
+    assert got.returncode == 2
+    assert got.stderr.startswith("fatline: error: scheduler=pairs: fatline prove has no encoding of this scheduler")
+    assert got.stderr.count("\n") == 1 and not (tmp_path / "proofs").exists()
+
+
+def test_a_scheduler_of_one_s_own_cannot_claim_an_encoding() -> None:
+    from fatline_verify.model.options import SchedulerName
+    from fatline_verify.schedulers.activation import register
+
+    class Claims:
+        kind = SchedulerName("claims")
+        alone = True
+        encoded = True
+
+    with pytest.raises(ValueError, match="encoded=True"):
+        register(Claims())  # type: ignore[arg-type]
+
+
+def test_an_unknown_scheduler_in_a_model_file_is_one_line(tmp_path: Path) -> None:
+    model = tmp_path / "m.toml"
+    model.write_text('name = "m"\n[options]\nscheduler = "pair"\n')
+    got = fatline("check", str(model))
+    assert got.returncode == 2
+    assert got.stderr.startswith("fatline: error: options.scheduler='pair': unknown scheduler; expected one of ssync, ")
+    assert "pairs" in got.stderr and "async" in got.stderr  # the plug-in's too

@@ -3,7 +3,7 @@
 
 from ...model.options import CATALOGUE
 from ..registry import MODEL_OPTIONS, RuleSet, register
-from .algorithm import Rule, decide
+from .algorithm import decide
 
 READINGS = frozenset(name for name, spec in CATALOGUE.items() if not spec.repair) - MODEL_OPTIONS
 """The paper's open points (``fatline explain``): the options this rule set reads."""
@@ -16,6 +16,5 @@ PAPER = register(
         options=READINGS,
         prover="paper",
         bands=True,
-        labels={rule.value: rule.value for rule in Rule},
     )
 )

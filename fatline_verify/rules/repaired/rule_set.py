@@ -5,7 +5,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from ...model.options import CATALOGUE
-from ..paper.algorithm import Decision, Rule, paper_decide
+from ..paper.algorithm import Decision, paper_decide
 from ..paper.rule_set import READINGS
 from ..registry import RuleSet, register
 from .algorithm import repair
@@ -27,6 +27,5 @@ REPAIRED = register(
         options=READINGS | REPAIRS,
         prover="legs",
         bands=True,
-        labels={rule.value: rule.value for rule in Rule},
     )
 )
