@@ -163,10 +163,14 @@ class Model:
         """One line: name, parameters and the readings that differ from the defaults."""
         p = self.parameters
         diff = self.options.differences()
-        readings = ", ".join(f"{k}={v}" for k, v in diff.items()) or "every default reading"
+        readings = ", ".join(f"{k}={v}" for k, v in diff.items()) or (
+            "every default reading" if self.rules in IMPLIED else "the scheduler's defaults"
+        )
         steps = f", async_steps={p.async_steps}" if self.options.scheduler is Scheduler.ASYNC else ""
+        rules = "" if self.rules in IMPLIED else f"rules={self.rules}, "
         return (
-            f"{self.name}: rad_v={format_number(p.rad_v)}, q={p.q}, delta={format_number(p.delta)}{steps}; {readings}"
+            f"{self.name}: {rules}rad_v={format_number(p.rad_v)}, q={p.q}, delta={format_number(p.delta)}{steps}; "
+            f"{readings}"
         )
 
 

@@ -24,12 +24,9 @@ class OptionSpec:
     only_under: Scheduler | None = None
     """The scheduler under which the option means something (``None``: every scheduler). Under the
     others it is left out of a model's data, so it changes no fingerprint and no trace."""
-
-    @property
-    def repair(self) -> bool:
-        """A change to the algorithm, not a reading of the paper (:mod:`fatline_verify.rules.repaired.algorithm`): left
-        out of a model's data at ``off``, and not swept."""
-        return self.name.startswith("repair_")
+    repair: bool = False
+    """A change to the algorithm, not a reading of the paper (the repaired rule set's,
+    :mod:`fatline_verify.rules.repaired.options`): left out of a model's data at ``off``, and not swept."""
 
 
 def spec(
@@ -39,8 +36,10 @@ def spec(
     readings: dict[str, str],
     note: str = "",
     only_under: Scheduler | None = None,
+    *,
+    repair: bool = False,
 ) -> OptionSpec:
     default = next(iter(enum))
     if set(readings) != {m.value for m in enum}:
         raise AssertionError(f"catalogue for {name} does not describe every reading")
-    return OptionSpec(name, enum, quote, readings, default, note, only_under)
+    return OptionSpec(name, enum, quote, readings, default, note, only_under, repair)

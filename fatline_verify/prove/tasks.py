@@ -12,7 +12,7 @@ from typing import Any
 from ..errors import InvalidInput
 from ..lemmas.properties import Lemma, Verdict
 from ..model.config import Model
-from ..model.options import Scheduler
+from ..model.options import CATALOGUE, Scheduler
 from ..rules import registry
 from ..rules.paper.cases import Case, moving_cases, staying_cases
 from ..rules.repaired.options import RepairProgress
@@ -161,7 +161,7 @@ def paper_part(model: Model) -> Model:
         return model
     from dataclasses import replace
 
-    off = {name: "off" for name in model.options.as_dict() if name.startswith("repair_")}
+    off = {name: "off" for name in model.options.as_dict() if CATALOGUE[name].repair}
     return replace(model, options=model.options.with_(**off))
 
 

@@ -16,7 +16,6 @@ from __future__ import annotations
 import importlib
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from importlib import metadata
 from typing import Any
 
 from ..errors import InvalidModel
@@ -62,7 +61,8 @@ class RuleSet:
 
 
 _REGISTRY: dict[str, RuleSet] = {}
-_loaded = False
+_loaded: set[str] = set()
+"""What has been loaded: ``"builtin"`` (this package's rule sets), ``"plugins"`` (the entry points)."""
 
 
 def register(rule_set: RuleSet) -> RuleSet:
@@ -74,18 +74,22 @@ def register(rule_set: RuleSet) -> RuleSet:
     return rule_set
 
 
-def _load() -> None:
-    global _loaded
-    if _loaded:
-        return
-    _loaded = True
-    for module in BUILTIN:
-        importlib.import_module(module)
-    load_plugins()
+def _load(*, plugins: bool = True) -> None:
+    """Load this package's rule sets, and (``plugins``) the installed plug-ins: scanning the entry
+    points costs a tenth of a second, so a model of the package's own rule sets does without it."""
+    if "builtin" not in _loaded:
+        _loaded.add("builtin")
+        for module in BUILTIN:
+            importlib.import_module(module)
+    if plugins and "plugins" not in _loaded:
+        _loaded.add("plugins")
+        load_plugins()
 
 
 def load_plugins() -> None:
     """Import every ``fatline.plugins`` entry point (a module registers on import; a callable is called)."""
+    from importlib import metadata  # a twentieth of a second to import: only when plug-ins are asked for
+
     for ep in metadata.entry_points(group=GROUP):
         try:
             obj = ep.load()
@@ -104,7 +108,9 @@ def names() -> tuple[str, ...]:
 
 def get(name: str) -> RuleSet:
     """The rule set called ``name``, or a one-line :class:`InvalidModel`."""
-    _load()
+    _load(plugins=False)
+    if name not in _REGISTRY:
+        _load()
     try:
         return _REGISTRY[name]
     except KeyError:

@@ -6,9 +6,15 @@ paper's open points."""
 from __future__ import annotations
 
 from enum import StrEnum
+from typing import Any
 
 from ...model.option_spec import OptionSpec
 from ...model.option_spec import spec as _spec
+
+
+def _repair(*args: Any, **kwargs: Any) -> OptionSpec:
+    """A repair's catalogue entry."""
+    return _spec(*args, **kwargs, repair=True)
 
 
 class RepairLock(StrEnum):
@@ -62,7 +68,7 @@ class RepairProgress(StrEnum):
 
 
 REPAIR_SPECS: list[OptionSpec] = [
-    _spec(
+    _repair(
         "repair_lock",
         RepairLock,
         "(a repair, not the paper's) semi-synchronous scheduling where an arbitrary set of robots look, "
@@ -75,7 +81,7 @@ REPAIR_SPECS: list[OptionSpec] = [
         },
         note="removes: two movers colliding or losing their edge in one round",
     ),
-    _spec(
+    _repair(
         "repair_stack",
         RepairStack,
         "(a repair, not the paper's) If B u C u D u E u F u G is empty and A u I is not empty, r does not move",
@@ -88,7 +94,7 @@ REPAIR_SPECS: list[OptionSpec] = [
         },
         note="removes: a deadlock of robots in each other's A/I bands but not on one vertical",
     ),
-    _spec(
+    _repair(
         "repair_approach",
         RepairApproach,
         "(a repair, not the paper's) If there is no vacant point ..., then r moves towards either -Y axis",
@@ -98,7 +104,7 @@ REPAIR_SPECS: list[OptionSpec] = [
         },
         note="removes: Scenario 4's drop taking r out of the swarm's view when the line is forming to its right",
     ),
-    _spec(
+    _repair(
         "repair_step",
         RepairStep,
         "(a repair, not the paper's) its horizontal movement must be followed by a vertical movement",
@@ -110,7 +116,7 @@ REPAIR_SPECS: list[OptionSpec] = [
         },
         note="removes: a move whose path meets a robot r cannot see, and far movers meeting",
     ),
-    _spec(
+    _repair(
         "repair_clear",
         RepairClear,
         "(a repair, not the paper's) A path ... is called free path, if ... is not contained any part of another robot",
@@ -120,7 +126,7 @@ REPAIR_SPECS: list[OptionSpec] = [
         },
         note="removes: r's path crossing a robot it sees",
     ),
-    _spec(
+    _repair(
         "repair_edges",
         RepairEdges,
         "(a repair, not the paper's) the robots remain connected (Lemma 1)",
@@ -131,7 +137,7 @@ REPAIR_SPECS: list[OptionSpec] = [
         },
         note="removes: r walking out of a neighbour's view",
     ),
-    _spec(
+    _repair(
         "repair_progress",
         RepairProgress,
         "(a repair, not the paper's) there exists always a robot which will move unless all the robots are "
