@@ -22,6 +22,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
 from pathlib import Path
+from typing import Any
 
 from .outputs import TEXT_MARKER, Kind, claim_file, write_text
 
@@ -153,4 +154,81 @@ def totals(suites: Iterable[Suite]) -> dict[Outcome, int]:
     return counts
 
 
-__all__ = ["Case", "Outcome", "Suite", "claim_junit", "to_xml", "totals", "write_junit"]
+# --- the commands' results as test cases ------------------------------------------------------------
+
+
+def _verdict_case(classname: str, name: str, verdict: str, reason: str, seconds: float | None, text: str) -> Case:
+    """VIOLATED is a failure, INCONCLUSIVE is skipped (with its reason), anything else passed."""
+    if verdict == "VIOLATED":
+        return Case(classname, name, seconds, Outcome.FAILURE, reason or verdict, verdict, text)
+    if verdict == "INCONCLUSIVE":
+        return Case(classname, name, seconds, Outcome.SKIPPED, reason or verdict, verdict, text)
+    return Case(classname, name, seconds)
+
+
+def check_suites(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[Suite]:
+    """``fatline check``: one suite per robot count (its time is the search's, which every lemma of that
+    count shares, so the cases carry none), one case per lemma: ``classname`` MODEL.LEMMA, ``name``
+    "N robots"."""
+    from .lemmas.properties import CHECKED
+    from .schedulers.systems import system_for
+
+    model = result.model
+    word = system_for(model).step_word
+    stats = {s.robots: s for s in result.stats}
+    suites = []
+    for n in sorted({r.robots for r in result.results} | set(stats)):
+        s = stats.get(n)
+        w, h = result.window
+        props = [("model", model.name), ("robots", str(n)), ("window", f"{w}x{h}")]
+        if result.bound is not None:
+            props.append(("bound", f"{result.bound[0]}x{result.bound[1]}"))
+        if s is not None:
+            props += [
+                ("initial", str(s.initial)),
+                ("states", str(s.states)),
+                ("transitions", str(s.transitions)),
+                ("truncated", "yes" if s.truncated else "no"),
+                ("engine", s.engine),
+            ]
+        cases = []
+        for lemma in CHECKED:
+            for r in (x for x in result.results if x.lemma is lemma and x.robots == n):
+                trace = trace_paths.get((lemma.value, n))
+                reason = r.reason
+                if r.witness_rounds is not None:
+                    steps = f"{r.witness_rounds} {word}{'s' * (r.witness_rounds != 1)}"
+                    reason += f"; witness of {steps}" + (f" in {trace}" if trace else "")
+                text = f"fatline replay {trace} -v" if trace else ""
+                cases.append(
+                    _verdict_case(f"{model.name}.{lemma.value}", f"{n} robots", r.verdict.value, reason, None, text)
+                )
+        suites.append(
+            Suite(f"fatline check {model.name}: {n} robots", tuple(cases), s.seconds if s else 0.0, tuple(props))
+        )
+    return suites
+
+
+def prove_suites(model: Any, rows: Sequence[dict[str, Any]]) -> list[Suite]:
+    """``fatline prove``: one suite per lemma, one case per obligation row (``results.json``):
+    ``classname`` MODEL.LEMMA, ``name`` the obligation (form-case[.and.other]), its solver seconds."""
+    from .prove.tasks import row_key
+
+    suites = []
+    for lemma in dict.fromkeys(r["lemma"] for r in rows):
+        cases = []
+        for r in (x for x in rows if x["lemma"] == lemma):
+            trace = r.get("trace")
+            lines = [f"obligation {r['smt2']}"] if r.get("smt2") else []
+            if trace:
+                lines.append(f"counterexample {trace}: fatline replay {trace} -v")
+            text = "\n".join(lines)
+            name = row_key(r).split("/", 1)[1]
+            cases.append(
+                _verdict_case(f"{model.name}.{lemma}", name, r["verdict"], r.get("reason", ""), r.get("seconds"), text)
+            )
+        suites.append(Suite(f"fatline prove {model.name}: {lemma}", tuple(cases), properties=(("model", model.name),)))
+    return suites
+
+
+__all__ = ["Case", "Outcome", "Suite", "check_suites", "claim_junit", "prove_suites", "to_xml", "totals", "write_junit"]
