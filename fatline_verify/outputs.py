@@ -43,6 +43,8 @@ class Kind(StrEnum):
     REACH = "fatline-reach"
     PAGE = "fatline-page"
     """Report pages, assets and pictures (text files carrying :data:`TEXT_MARKER`)."""
+    JUNIT = "fatline-junit"
+    """JUnit XML reports (``--junit``): an XML comment carrying :data:`TEXT_MARKER` and this value."""
 
     def describe(self) -> str:
         return {
@@ -52,6 +54,7 @@ class Kind(StrEnum):
             Kind.SWEEP: "a fatline sweep",
             Kind.REACH: "a fatline reach result",
             Kind.PAGE: "a page fatline report wrote",
+            Kind.JUNIT: "a JUnit XML report fatline wrote",
         }[self]
 
 
@@ -70,6 +73,10 @@ def is_output(path: Path, kind: Kind) -> bool:
         if kind is Kind.PAGE:
             with path.open(encoding="utf-8") as fh:
                 return TEXT_MARKER in fh.read(4096)
+        if kind is Kind.JUNIT:
+            with path.open(encoding="utf-8") as fh:
+                head = fh.read(4096)
+            return TEXT_MARKER in head and kind.value in head
         data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, ValueError):
         return False

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InvalidInput
+from ..junit import check_suites, claim_junit, write_junit
 from ..model.config import parse_robots, parse_window
 from ..outputs import Kind, claim_dir, claim_file, claim_files, write_json
 from ..progress import Progress
@@ -54,6 +55,7 @@ def cmd_check(args: argparse.Namespace) -> int:
         model = model.with_q(args.q)
     traces_dir = claim_dir(args.traces, name="traces")
     json_path = claim_file(args.json, name="json", kind=Kind.CHECK, force=args.force) if args.json else None
+    junit_path = claim_junit(args.junit, force=args.force) if args.junit else None
     bound = parse_window(args.bound, error=InvalidInput, name="bound") if args.bound is not None else None
     max_memory = parse_size(args.max_memory) if args.max_memory is not None else None
     checkpoint = Path(args.checkpoint) if args.checkpoint is not None else None
@@ -89,6 +91,9 @@ def cmd_check(args: argparse.Namespace) -> int:
     if json_path is not None and (done or not interrupted):
         write_json(json_path, check_to_json(result, paths))
         lines.append(f"results written to {json_path}")
+    if junit_path is not None and (done or not interrupted):
+        write_junit(junit_path, check_suites(result, paths), name=f"fatline check {model.name}")
+        lines.append(f"JUnit XML written to {junit_path}")
     emit(lines)
     if interrupted:
         return EXIT_INTERRUPTED
@@ -142,6 +147,13 @@ def register(sub: Any) -> None:
     )
     p.add_argument(
         "--json", type=nonempty("json", "a file name for the JSON results"), help="write the results as JSON"
+    )
+    p.add_argument(
+        "--junit",
+        metavar="FILE",
+        type=nonempty("junit", "a file name for the JUnit XML report"),
+        help="also write a JUnit XML report: one test case per lemma and robot count (VIOLATED a failure, "
+        "INCONCLUSIVE skipped with its reason)",
     )
     p.add_argument(
         "--traces",

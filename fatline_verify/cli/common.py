@@ -22,7 +22,7 @@ EXIT_OK, EXIT_FOUND, EXIT_BAD, EXIT_INCONCLUSIVE, EXIT_INTERRUPTED = 0, 1, 2, 3,
 
 EPILOG = """exit codes:
   0    everything asked holds (check: every lemma HOLDS_WITHIN_BOUNDS; simulate: no violation and no
-       deadlock; replay: every trace reproduces)
+       deadlock; replay, regress: every trace reproduces)
   1    a violation or deadlock was found, or a trace did not reproduce
   2    bad input (malformed model, trace or argument) or an internal error
   3    check and prove only: nothing violated, but some verdict is INCONCLUSIVE (a bound was hit)

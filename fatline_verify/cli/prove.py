@@ -6,6 +6,7 @@ import argparse
 import os
 from typing import Any
 
+from ..junit import claim_junit, prove_suites, write_junit
 from ..lemmas.properties import Lemma
 from ..outputs import Kind, child, claim_dir, claim_file, claim_files, write_json
 from ..progress import Progress
@@ -52,6 +53,7 @@ def cmd_prove(args: argparse.Namespace) -> int:
     out = claim_dir(child(root, model.name), name="out")
     traces_dir = claim_dir(args.traces, name="traces") if args.traces is not None else out / "traces"
     json_path = claim_file(args.json, name="json", kind=Kind.PROVE, force=args.force) if args.json else None
+    junit_path = claim_junit(args.junit, force=args.force) if args.junit else None
     claim_files([out / "results.json"], name="out", kind=Kind.PROVE, force=args.force)
     store = ProofResults(model, out, traces_dir, slots=args.slots, timeout=args.timeout)
     if args.redo_inconclusive:
@@ -84,6 +86,9 @@ def cmd_prove(args: argparse.Namespace) -> int:
         lines.append(f"INTERRUPTED: {len(rows)} of {len(tasks)} obligations finished and saved in {store.path}")
     if json_path is not None:
         write_json(json_path, store.document(keys))
+    if junit_path is not None:
+        write_junit(junit_path, prove_suites(model, rows), name=f"fatline prove {model.name}")
+        lines.append(f"JUnit XML written to {junit_path}")
     emit(lines)
     if interrupted:
         return EXIT_INTERRUPTED
@@ -127,6 +132,13 @@ def register(sub: Any) -> None:
     )
     p.add_argument(
         "--json", type=nonempty("json", "a file name for the JSON results"), help="also write the results as JSON"
+    )
+    p.add_argument(
+        "--junit",
+        metavar="FILE",
+        type=nonempty("junit", "a file name for the JUnit XML report"),
+        help="also write a JUnit XML report: one test case per obligation (VIOLATED a failure, INCONCLUSIVE "
+        "skipped with its reason), its solver seconds",
     )
     p.add_argument(
         "--two-movers",

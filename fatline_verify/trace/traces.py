@@ -158,11 +158,20 @@ def write_trace(doc: dict[str, Any], path: Path) -> None:
 # --- from JSON --------------------------------------------------------------------------------------
 
 
+@cache
+def _validator() -> Any:
+    """The schema's validator, the schema itself checked once (``jsonschema.validate`` checks it on every
+    call, 95 % of the time of loading a trace: 13 s for the 385 traces of the corpus)."""
+    cls = jsonschema.validators.validator_for(schema())
+    cls.check_schema(schema())
+    return cls(schema())
+
+
 def validate(doc: object, *, where: str = "trace") -> None:
-    """Check ``doc`` against the schema; one-line :class:`InvalidTrace` naming the first problem."""
-    try:
-        jsonschema.validate(doc, schema())
-    except jsonschema.ValidationError as exc:
+    """Check ``doc`` against the schema; one-line :class:`InvalidTrace` naming the first problem (the
+    error ``jsonschema.validate`` would raise)."""
+    exc = jsonschema.exceptions.best_match(_validator().iter_errors(doc))
+    if exc is not None:
         path = "/".join(str(p) for p in exc.absolute_path) or "(top level)"
         raise InvalidTrace(f"{where}: at {path}: {exc.message}") from None
 
