@@ -185,10 +185,16 @@ def rule_quote(rule: Rule) -> str:
     return note
 
 
-def _seen(i: int, decision: Decision, state: Sequence[Point]) -> str:
-    """``sees r1 in A, r2 in A and C``: the robots ``i`` sees and the sets it put them in."""
+def _seen(i: int, decision: Decision, state: Sequence[Point], model: Model | None = None) -> str:
+    """``sees r1 in A, r2 in A and C``: the robots ``i`` sees and the sets it put them in (a rule set
+    that does not classify into the paper's sets: the robots it sees, by ``model``'s visibility)."""
     index = {p: j for j, p in enumerate(state)}
     ox, oy = state[i]
+    if not decision.classification and model is not None:
+        seen_ids = [
+            f"r{j}" for j, p in enumerate(state) if j != i and model.sees((p[0] - ox) ** 2 + (p[1] - oy) ** 2)
+        ]
+        return "sees " + ", ".join(seen_ids) if seen_ids else "sees no robot"
     seen = [
         f"r{index[(ox + c[0], oy + c[1])]} in {' and '.join(sorted(m)) or 'no set'}" for c, m in decision.classification
     ]
@@ -202,7 +208,7 @@ def stay_lines(state: Sequence[Point], model: Model) -> list[str]:
     lines, used = [], []
     for i, d in sorted(decisions.items()):
         status = "enabled, " if d.moves else ""
-        lines.append(f"r{i}: {status}{rule_label(d.rule)} ({_seen(i, d, state)})")
+        lines.append(f"r{i}: {status}{rule_label(d.rule)} ({_seen(i, d, state, model)})")
         if d.rule not in used:
             used.append(d.rule)
     for rule in used:

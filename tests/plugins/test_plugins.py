@@ -332,3 +332,10 @@ def test_an_unknown_scheduler_in_a_model_file_is_one_line(tmp_path: Path) -> Non
     assert got.returncode == 2
     assert got.stderr.startswith("fatline: error: options.scheduler='pair': unknown scheduler; expected one of ssync, ")
     assert "pairs" in got.stderr and "async" in got.stderr  # the plug-in's too
+
+
+def test_a_deadlock_of_the_toy_says_whom_each_robot_sees() -> None:
+    """The toy does not sort robots into the paper's sets: the text lists the robots each one sees."""
+    got = fatline("simulate", str(MODEL), "--init", "0,0 4,0", "--rounds", "5")
+    assert got.returncode == 1
+    assert "r0: toy-stay (sees r1)" in got.stdout and "r1: toy-stay (sees r0)" in got.stdout
