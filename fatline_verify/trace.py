@@ -28,7 +28,7 @@ from .algorithm import Decision
 from .config import Model, model_from_mapping, model_to_mapping
 from .errors import FatlineError, InvalidInput, InvalidTrace, TraceDidNotReproduce
 from .numbers import Number, Point, format_number, parse_number
-from .outputs import write_json
+from .outputs import NotReadable, parse_json, read_regular, write_json
 from .properties import SAFETY, Lemma
 from .schedule import Collision, Disconnection, RmaMoved, RoundResult, Violation, lost_edges
 from .simulate import Outcome, Run, outcome_after
@@ -250,19 +250,21 @@ def validate(doc: object, *, where: str = "trace") -> None:
     except jsonschema.ValidationError as exc:
         path = "/".join(str(p) for p in exc.absolute_path) or "(top level)"
         raise InvalidTrace(f"{where}: at {path}: {exc.message}") from None
+    except RecursionError:
+        raise InvalidTrace(f"{where}: arrays or objects nested too deep; expected a trace JSON file") from None
 
 
 def load_trace(path: str | Path) -> dict[str, Any]:
     """Read and schema-check a trace file."""
     p = Path(path)
     try:
-        doc = json.loads(p.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise InvalidTrace(f"trace={str(p)!r}: no such file; expected a trace JSON file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InvalidTrace(f"trace={str(p)!r}: cannot be read ({exc.__class__.__name__})") from None
-    except json.JSONDecodeError as exc:
-        raise InvalidTrace(f"trace={str(p)!r}: not JSON (line {exc.lineno}: {exc.msg})") from None
+        data = read_regular(p)  # a FIFO or a device is refused, not waited on or read without end
+    except NotReadable as exc:
+        raise InvalidTrace(f"trace={str(p)!r}: {exc}; expected a trace JSON file") from None
+    try:
+        doc = parse_json(data)
+    except ValueError as exc:
+        raise InvalidTrace(f"trace={str(p)!r}: {exc}; expected a trace JSON file") from None
     validate(doc, where=str(p))
     return doc  # type: ignore[no-any-return]
 
