@@ -82,9 +82,9 @@ def cmd_prove(args: argparse.Namespace) -> int:
     lines = prove_lines(model, rows, out)
     if interrupted:
         lines.append(f"INTERRUPTED: {len(rows)} of {len(tasks)} obligations finished and saved in {store.path}")
+    emit(lines)  # the verdicts before the --json file: a full disk does not hide them
     if json_path is not None:
         write_json(json_path, store.document(keys))
-    emit(lines)
     if interrupted:
         return EXIT_INTERRUPTED
     if any(r["verdict"] == "VIOLATED" for r in rows):
