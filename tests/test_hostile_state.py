@@ -692,9 +692,9 @@ UNSHARE = shutil.which("unshare")
 
 def _in_full_tmpfs(tmp_path: Path, script: str) -> subprocess.CompletedProcess[str]:
     """Run ``script`` (sh) with ``$M`` a 256 KiB tmpfs filled to the last byte, in a mount namespace of its
-    own (nothing to unmount afterwards); skipped where none can be made."""
-    if UNSHARE is None or os.environ.get("CI"):
-        pytest.skip("no unshare (or under CI): a tmpfs cannot be mounted here")
+    own (nothing to unmount afterwards); skipped only where none can be mounted (under CI too)."""
+    if UNSHARE is None:
+        pytest.skip("no unshare: a tmpfs cannot be mounted here")
     mount = tmp_path / "m"
     mount.mkdir()
     prelude = (
