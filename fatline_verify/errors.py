@@ -29,3 +29,8 @@ class Unsupported(FatlineError):
 
 class TraceDidNotReproduce(FatlineError):
     """Replay recomputed a value that differs from the recorded one; names the first difference."""
+
+
+class OutputFailed(FatlineError):
+    """A file could not be written or read back as written (a full disk, a name too long, a file changed
+    since the tool wrote it); the message names the path."""

@@ -12,6 +12,7 @@ import re
 import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
+from fractions import Fraction
 from math import isqrt
 from pathlib import Path
 from typing import Any
@@ -23,6 +24,7 @@ from ..lemmas.properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason,
 from ..lemmas.registry import registered
 from ..model.config import Model
 from ..model.lattice import KeyCodec
+from ..model.numbers import format_number
 from ..outputs import Kind, child
 from ..resources import default_max_memory, format_size, machine_memory
 from ..schedulers.base import ENGINES, unknown_engine
@@ -138,16 +140,42 @@ def validate_resources(model: Model, robots: tuple[int, int], window: tuple[int,
     reach = isqrt(model.view2)
     offsets = (2 * reach + 1) ** 2
     if offsets > MAX_VIEW_OFFSETS:
-        raise InvalidInput(
-            f"q={model.parameters.q}: a robot sees {offsets:,} lattice offsets (rad_v={model.parameters.rad_v}, "
-            f"q={model.parameters.q}), more than {MAX_VIEW_OFFSETS:,} fit in memory; expected a smaller --q"
+        p = model.parameters
+        q0 = Fraction(p.rad_v).denominator  # the coarsest lattice rad_v is whole on
+        coarse = isqrt(model.with_q(q0).view2) if p.q > q0 else reach
+        if p.q > q0 and (2 * coarse + 1) ** 2 <= MAX_VIEW_OFFSETS:  # the lattice is too fine: q is the knob
+            raise InvalidInput(
+                f"q={p.q}: a robot sees {offsets:,} lattice offsets (rad_v={format_number(p.rad_v)}, q={p.q}), more "
+                f"than {MAX_VIEW_OFFSETS:,} fit in memory; expected a smaller --q"
+            )
+        raise InvalidInput(  # even one lattice point per radius is too fine: the visibility radius is the knob
+            f"rad_v={format_number(p.rad_v)}: a robot sees {offsets:,} lattice offsets (q={p.q}), more than "
+            f"{MAX_VIEW_OFFSETS:,} fit in memory; expected a smaller rad_v in the model"
         )
     w, h = window
     if robots[1] >= 2 and (w - 1) ** 2 + (h - 1) ** 2 < model.apart2:
         raise InvalidInput(
-            f"window={w}x{h}: no two robots fit at distance >= delta={model.parameters.delta} "
+            f"window={w}x{h}: no two robots fit at distance >= delta={format_number(model.parameters.delta)} "
             f"({model.parameters.q} lattice points per radius); expected a larger --window"
         )
+
+
+def guard_starts(
+    model: Model, robots: tuple[int, int], window: tuple[int, int], budget: int, per_start: int, budget_name: str
+) -> None:
+    """Refuse, before any work, robot counts whose initial configurations alone would need more than
+    ``budget`` bytes at ``per_start`` bytes each (counted, not enumerated, and only up to the budget)."""
+    from .initial import count_initial
+
+    cap = max(1, budget // per_start)
+    for n in range(robots[0], robots[1] + 1):
+        found = count_initial(n, window, model, cap)
+        if found > cap:
+            raise InvalidInput(
+                f"robots={n} window={window[0]}x{window[1]}: more than {found:,} initial configurations, at least "
+                f"{format_size(found * per_start)} of memory, beyond {format_size(budget)} ({budget_name}); expected "
+                "fewer robots or a smaller --window"
+            )
 
 
 def check(
@@ -222,6 +250,8 @@ class CheckPlan:
         engine_for(system_for(model), engine)  # a system without this engine refuses it here, before any work
         validate_bounds(model, robots, window, max_states, engine, bound)
         validate_resources(model, robots, window)
+        if max_memory:  # the initial keys, 8 bytes each, are held before the memory guard of the search
+            guard_starts(model, robots, window, max_memory, 8, "--max-memory")
         if checkpoint is not None:
             claim_checkpoint(checkpoint, range(robots[0], robots[1] + 1))
         return cls(

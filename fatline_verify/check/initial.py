@@ -537,6 +537,49 @@ def initial_keys(n: int, window: tuple[int, int], model: Model, codec: KeyCodec)
     return keys
 
 
+def count_initial(n: int, window: tuple[int, int], model: Model, cap: int | None = None) -> int:
+    """How many configurations :func:`initial_keys` would return, counted without keeping any (the
+    count pass alone); with ``cap``, the count stops as soon as it passes ``cap`` and returns what it
+    reached (so a guard refusing more than ``cap`` costs little however many there are)."""
+    from math import comb
+
+    w, h = window
+    if n < 1 or w < 1 or h < 1:
+        return 0
+    if n == 1:
+        return 1
+    if cap is not None and comb(w * h, n) <= cap:
+        return 0  # fewer than cap whatever the count: nothing to guard
+    if not HAVE_NUMBA:  # pragma: no cover
+        return len(initial_array_by_levels(n, window, model))
+    codec = KeyCodec(n, window)
+    lat = _Lattice(n, window, model)
+    tasks = lat.frontier(min(FRONTIER_DEPTH, n - 1))
+    if not tasks:
+        return 0
+    t_chosen = np.array([c for c, _, _ in tasks], dtype=np.int64)
+    member = np.zeros((2, len(tasks), len(lat.px)), dtype=bool)
+    for t, (_, untried, seen) in enumerate(tasks):
+        member[0, t, untried] = True
+        member[1, t, seen] = True
+    t_untried, t_seen = lat.pack(member[0]), lat.pack(member[1])
+    workers = max(1, int(get_num_threads()))
+    args = (n, lat.h, codec.h, codec.bits, lat.px, lat.py, lat.nbr, lat.near, lat.y_ge, lat.y_le)
+    chunk = len(tasks) if cap is None else max(4 * workers, len(tasks) // 64)
+    total = 0
+    with _KERNEL_LOCK:
+        for lo in range(0, len(tasks), chunk):
+            hi = min(lo + chunk, len(tasks))
+            counts = np.zeros(hi - lo, dtype=np.int64)
+            offsets = np.zeros(hi - lo + 1, dtype=np.int64)
+            targs = (t_chosen[lo:hi], t_untried[lo:hi], t_seen[lo:hi], workers)
+            _run(*args, *targs, False, offsets, np.zeros(0, dtype=np.int64), counts)
+            total += int(counts.sum())
+            if cap is not None and total > cap:
+                break
+    return total
+
+
 def initial_array(n: int, window: tuple[int, int], model: Model) -> np.ndarray:
     """The same configurations as :func:`initial_configurations`, as canonical states ``(m, n, 2)``
     sorted by key (in ``KeyCodec(n, window)``): :func:`initial_keys`, decoded (as

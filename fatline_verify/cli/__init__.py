@@ -58,6 +58,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         with contextlib.suppress(OSError):
             sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - silence the flush at exit
         return EXIT_OK
+    except OSError as exc:  # the file system said no (a full disk, a name too long): one line naming the path
+        from ..outputs import os_error_text
+
+        if os.environ.get("FATLINE_DEBUG"):
+            raise
+        print(error_line(os_error_text(exc.filename, exc)), file=sys.stderr)
+        return EXIT_BAD
     except Exception as exc:  # a bug of the tool: one line, the traceback on request
         if os.environ.get("FATLINE_DEBUG"):
             raise

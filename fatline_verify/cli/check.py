@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 from pathlib import Path
 from typing import Any
 
@@ -23,6 +24,7 @@ from .common import (
     add_command,
     add_force,
     add_model_argument,
+    check_workers,
     emit,
     integer,
     model_arg,
@@ -46,7 +48,8 @@ def stage_callback(bar: Progress) -> Any:
 
 
 def cmd_check(args: argparse.Namespace) -> int:
-    from ..check.checker import CheckPlan, check_to_json, witness_paths, write_witnesses
+    from ..check.checker import CheckPlan, check_to_json, witness_path, witness_paths, write_witnesses
+    from ..locks import holding
 
     model = model_arg(args.model)
     robots = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else None
@@ -59,6 +62,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     bound = parse_window(args.bound, error=InvalidInput, name="bound") if args.bound is not None else None
     max_memory = parse_size(args.max_memory) if args.max_memory is not None else None
     checkpoint = Path(args.checkpoint) if args.checkpoint is not None else None
+    check_workers(args.workers, args.cluster)
     plan = CheckPlan.of(
         model,
         robots,
@@ -76,25 +80,34 @@ def cmd_check(args: argparse.Namespace) -> int:
 
     done = []
     interrupted = False
-    with Progress(enabled=not args.quiet, unit="states") as bar:
-        try:
-            for search in plan.searches(stage_callback(bar)):
-                done.append(search)
-        except KeyboardInterrupt:
-            interrupted = True
+    with contextlib.ExitStack() as held:
+        if checkpoint is not None:  # one run at a time per checkpoint: a second is refused here, before any work
+            held.enter_context(holding(checkpoint, name="checkpoint"))
+        with Progress(enabled=not args.quiet, unit="states") as bar:
+            try:
+                for search in plan.searches(stage_callback(bar)):
+                    done.append(search)
+            except KeyboardInterrupt:
+                interrupted = True
     result = plan.result(done)
-    paths = write_witnesses(result, traces_dir, f"{model.name}-")
+    prefix = f"{model.name}-"
+    paths = {
+        (r.lemma.value, r.robots): witness_path(traces_dir, prefix, r.lemma, r.robots).as_posix()
+        for r in result.results
+        if r.witness is not None
+    }
     lines = check_lines(result, paths)
     if interrupted:
         finished = ", ".join(str(s.robots) for s in result.stats) or "none"
         lines.append(f"INTERRUPTED: robot counts finished: {finished}; the rest was not searched")
+    emit(lines)  # the verdicts before any file: a full disk does not hide them
+    write_witnesses(result, traces_dir, prefix)
     if json_path is not None and (done or not interrupted):
         write_json(json_path, check_to_json(result, paths))
-        lines.append(f"results written to {json_path}")
+        emit([f"results written to {json_path}"])
     if junit_path is not None and (done or not interrupted):
         write_junit(junit_path, check_suites(result, paths), name=f"fatline check {model.name}")
-        lines.append(f"JUnit XML written to {junit_path}")
-    emit(lines)
+        emit([f"JUnit XML written to {junit_path}"])
     if interrupted:
         return EXIT_INTERRUPTED
     if result.any_violated:

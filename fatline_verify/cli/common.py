@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import re
 import sys
 from collections.abc import Callable, Sequence
@@ -25,7 +26,7 @@ EPILOG = """exit codes:
        deadlock; replay, regress: every trace reproduces)
   1    a violation or deadlock was found, or a trace did not reproduce
   2    bad input (malformed model, trace or argument) or an internal error
-  3    check and prove only: nothing violated, but some verdict is INCONCLUSIVE (a bound was hit)
+  3    check, prove and sweep: nothing violated, but some verdict is INCONCLUSIVE (a bound was hit)
   130  interrupted (Ctrl-C); what was finished is kept
 """
 
@@ -59,9 +60,37 @@ _REWRITES: list[tuple[re.Pattern[str], Callable[[re.Match[str]], str]]] = [
 ]
 
 
+ECHO = 200
+"""The most characters of one value an error line repeats."""
+LINE = 1000
+"""The most characters of one error line."""
+
+
 def error_line(message: str) -> str:
-    """The one line every error is printed as."""
-    return f"fatline: error: {' '.join(message.split())}"
+    """The one line every error is printed as (a value longer than :data:`ECHO` characters cut short)."""
+    words = [
+        w if len(w) <= ECHO else f"{w[: ECHO - 20]}...({len(w):,} characters)...{w[-20:]}" for w in message.split()
+    ]
+    line = f"fatline: error: {' '.join(words)}"
+    return line if len(line) <= LINE else f"{line[:LINE]}...(+{len(line) - LINE:,} characters)"
+
+
+def cores() -> int:
+    """The processor cores this process may run on."""
+    try:
+        return len(os.sched_getaffinity(0)) or 1
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
+def check_workers(workers: int, cluster: str | None) -> None:
+    """Refuse (not cap), before any work, more local worker processes than this machine has cores:
+    they would only share the cores, each holding its own copy of the search."""
+    if cluster is None and workers > cores():
+        raise InvalidInput(
+            f"workers={workers}: expected at most {cores()}, the cores of this machine (more processes than cores "
+            "only share them); for more, --cluster with the workers of several machines"
+        )
 
 
 class Parser(argparse.ArgumentParser):

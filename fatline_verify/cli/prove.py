@@ -84,12 +84,12 @@ def cmd_prove(args: argparse.Namespace) -> int:
     lines = prove_lines(model, rows, out)
     if interrupted:
         lines.append(f"INTERRUPTED: {len(rows)} of {len(tasks)} obligations finished and saved in {store.path}")
+    emit(lines)  # the verdicts before the --json file: a full disk does not hide them
     if json_path is not None:
         write_json(json_path, store.document(keys))
     if junit_path is not None:
         write_junit(junit_path, prove_suites(model, rows), name=f"fatline prove {model.name}")
-        lines.append(f"JUnit XML written to {junit_path}")
-    emit(lines)
+        emit([f"JUnit XML written to {junit_path}"])
     if interrupted:
         return EXIT_INTERRUPTED
     if any(r["verdict"] == "VIOLATED" for r in rows):

@@ -8,6 +8,7 @@ from typing import Any
 
 from ..errors import InvalidInput
 from ..model.config import shipped_models
+from ..outputs import claim_dir
 from ..progress import Progress
 from .common import EXIT_OK, add_command, add_force, emit, integer, model_arg, nonempty, seconds
 from .prove import DEFAULT_SLOTS, DEFAULT_TIMEOUT, MAX_SLOTS
@@ -16,6 +17,7 @@ STEPS = ("check", "prove", "pictures")
 
 
 def cmd_report(args: argparse.Namespace) -> int:
+    from ..locks import holding
     from ..report.build import build_report
 
     specs = args.models or [p.stem for p in shipped_models()]
@@ -24,7 +26,8 @@ def cmd_report(args: argparse.Namespace) -> int:
     if len(set(names)) != len(names):
         raise InvalidInput(f"models={specs}: two models share a name; expected distinct model names")
     out = Path(args.out)
-    with Progress(enabled=not args.quiet, unit="steps") as bar:
+    claim_dir(out, name="out")
+    with holding(out, name="out"), Progress(enabled=not args.quiet, unit="steps") as bar:  # one run per --out
         bar.stage("report", total=len(models) * len(STEPS))
         reports = build_report(
             models,

@@ -73,10 +73,10 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     if args.schedule is not None and len(run.rounds) < len(rounds):
         rest = len(rounds) - len(run.rounds)
         lines.append(f"the remaining {rest} scheduled {word}{'s' if rest != 1 else ''} were not played")
+    emit(lines)  # the run first: a full disk does not hide it
     if trace is not None:
         write_trace(doc, trace)
-        lines.append(f"trace written to {trace}")
-    emit(lines)
+        emit([f"trace written to {trace}"])
     return EXIT_FOUND if run.outcome in (Outcome.VIOLATION, Outcome.DEADLOCK) else EXIT_OK
 
 

@@ -19,6 +19,7 @@ from .common import (
     EXIT_OK,
     add_command,
     add_model_argument,
+    check_workers,
     emit,
     integer,
     model_arg,
@@ -32,8 +33,8 @@ DEFAULT_WINDOW = (7, 7)
 def cmd_sweep(args: argparse.Namespace) -> int:
     from ..check.checker import CheckPlan
     from ..check.workers import require_dask
-    from ..sweep.page import claim_pages, write_pages
-    from ..sweep.run import Sweep, SweepBounds, sweep_lines
+    from ..locks import holding
+    from ..sweep.run import Sweep, SweepBounds
     from ..sweep.space import Space, parse_vary
 
     model = model_arg(args.model)
@@ -45,6 +46,7 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     window = parse_window(args.window, error=InvalidInput) if args.window is not None else DEFAULT_WINDOW
     bound = parse_window(args.bound, error=InvalidInput, name="bound") if args.bound is not None else None
     CheckPlan.of(model, robots, window, args.max_states, args.engine, bound=bound)  # refused now, not per check
+    check_workers(args.workers, args.cluster)
     if args.cluster is not None or args.workers > 1:
         require_dask(f"workers={args.workers}" if args.cluster is None else f"cluster={args.cluster!r}")
     root = claim_dir(args.out, name="out")
@@ -54,7 +56,16 @@ def cmd_sweep(args: argparse.Namespace) -> int:
         child(root, model.name),
         lemmas,
     )
-    resumed = sweep.resume()  # refuses another sweep's directory, before any work
+    with holding(sweep.out, name="out"):  # one run at a time per sweep: a second is refused, before any work
+        return _run(args, model.name, sweep)
+
+
+def _run(args: argparse.Namespace, name: str, sweep: Any) -> int:
+    """Resume, run, save and report ``sweep`` (its directory held)."""
+    from ..sweep.page import claim_pages, page_files, write_pages
+    from ..sweep.run import INCONCLUSIVE, sweep_lines
+
+    resumed = sweep.resume()  # refuses another sweep's directory, or files changed since, before any work
     claim_pages(sweep.out)
 
     def say(line: str) -> None:
@@ -69,18 +80,21 @@ def cmd_sweep(args: argparse.Namespace) -> int:
             sweep.run(args.max_checks, args.workers, args.cluster, say)
     except KeyboardInterrupt:
         interrupted = True
-    sweep.save()
-    pages = write_pages(sweep, _command(args, model.name))
-    lines = [*sweep_lines(sweep), f"report page: {pages[0]}"]
+    lines = [*sweep_lines(sweep), f"report page: {page_files(sweep.out)[0]}"]
     if interrupted:
         lines.append(f"INTERRUPTED: {len(sweep.checks)} checks finished and saved in {sweep.json_path}; "
                      "the same command resumes")  # fmt: skip
-    emit(lines)
+    emit(lines)  # the verdicts before any file: a full disk does not hide them
+    sweep.save()
+    write_pages(sweep, _command(args, name))
     if interrupted:
         return EXIT_INTERRUPTED
     if sweep.open_count():
         return EXIT_INCONCLUSIVE
-    return EXIT_FOUND if sweep.witnesses else EXIT_OK
+    if sweep.witnesses:
+        return EXIT_FOUND
+    # nothing refuted: INCONCLUSIVE anywhere is exit 3, as for check
+    return EXIT_INCONCLUSIVE if any((s == INCONCLUSIVE).any() for s in sweep.status.values()) else EXIT_OK
 
 
 def _command(args: argparse.Namespace, name: str) -> str:

@@ -19,8 +19,8 @@ from typing import Any
 
 from ..errors import InvalidModel, Unsupported
 from ..lemmas.properties import CHECKED
-from ..outputs import SLUG
-from .numbers import Number, Point, format_number, normalize, parse_number
+from ..outputs import SLUG, NotReadable, read_regular
+from .numbers import MAX_DIGITS, Number, Point, format_number, normalize, parse_number
 from .options import Options, Scheduler, Visibility, is_repaired, options_from_mapping
 
 MODELS_DIR = Path(__file__).parent.parent / "models"
@@ -309,6 +309,8 @@ def resolve_model_path(spec: str | Path) -> Path:
     path = Path(spec)
     if path.is_file():
         return path
+    if path.exists() and not path.is_dir():  # a FIFO or a device: never read (it would block or never end)
+        raise InvalidModel(f"model={str(spec)!r}: not a regular file; expected a model file or a shipped model name")
     shipped = MODELS_DIR / f"{spec}.toml"
     if not path.suffix and shipped.is_file():
         return shipped
@@ -316,15 +318,42 @@ def resolve_model_path(spec: str | Path) -> Path:
     raise InvalidModel(f"model={str(spec)!r}: no such file; expected a model file or a shipped model name ({known})")
 
 
+MAX_MODEL_BYTES = 2**20
+"""The largest model file read (the shipped ones are under 2 KB)."""
+
+
+def _long_number(path: Path, text: str) -> str:
+    """The error for a number too long to read: the key it is the value of, and its length."""
+    import re
+
+    m = re.search(r"(?m)^\s*([A-Za-z0-9_.\"'-]+)\s*=\s*[+-]?([0-9_]{1000,})", text)
+    if m is None:
+        return f"model={str(path)!r}: holds a number too long to read; expected numbers of at most {MAX_DIGITS} digits"
+    key, digits = m.group(1).strip("\"'"), m.group(2).replace("_", "")
+    where = path.as_posix()
+    return f"{key}={digits[:20]}...: a number of {len(digits):,} digits; expected at most {MAX_DIGITS} digits ({where})"
+
+
 def load_model(spec: str | Path = "paper") -> Model:
     """Read, parse and validate a model file. Every problem is one :class:`InvalidModel` line."""
     path = resolve_model_path(spec)
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        text = read_regular(path, limit=MAX_MODEL_BYTES).decode("utf-8")
+    except NotReadable as exc:
+        raise InvalidModel(f"model={str(path)!r}: {exc}; expected a TOML model file") from None
+    except UnicodeDecodeError:
+        raise InvalidModel(f"model={str(path)!r}: not UTF-8 text; expected a TOML model file") from None
+    try:
+        data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InvalidModel(f"model={str(path)!r}: not valid TOML ({exc})") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InvalidModel(f"model={str(path)!r}: cannot be read ({exc.__class__.__name__})") from None
+    except RecursionError:
+        raise InvalidModel(
+            f"model={str(path)!r}: arrays or tables nested too deep; expected a TOML model (name, parameters, "
+            "options, bounds)"
+        ) from None
+    except ValueError:  # Python's limit on converting long digit strings: name the key that holds one
+        raise InvalidModel(_long_number(path, text)) from None
     if not data:
         raise InvalidModel(
             f"model={str(path)!r}: the file is empty; expected a TOML model (name, parameters, options, bounds)"

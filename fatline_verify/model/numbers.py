@@ -25,6 +25,21 @@ def normalize(value: Number) -> Number:
     return value
 
 
+MAX_DIGITS = 1000
+"""The most digits a number read from text may have (positions, parameters): far more than any model or
+trace needs (the longest in the corpus has 119), and few enough that exact arithmetic on them stays fast."""
+
+
+def _digits(value: object) -> int:
+    """The digits of an integer, or of the longest run of digits in a text (without converting it)."""
+    if isinstance(value, int):
+        size = value.bit_length()
+        return len(str(abs(value))) if size < 13_000 else int(size * 0.30103) + 1  # str() stops at 4,300 digits
+    if isinstance(value, str):
+        return max((len(run) for run in re.findall(r"\d+", value)), default=0)
+    return 0
+
+
 def parse_number(text: object, *, name: str, allow_decimal: bool = False) -> Number:
     """Parse an integer, ``"p/q"`` (or, if allowed, a finite decimal such as ``"2.01"``) exactly.
 
@@ -36,6 +51,10 @@ def parse_number(text: object, *, name: str, allow_decimal: bool = False) -> Num
     """
     if isinstance(text, bool):
         raise ValueError(f"{name}={text!r}: expected an integer or a fraction like 5/2")
+    digits = _digits(text)
+    if digits > MAX_DIGITS:
+        head = text.strip()[:20] if isinstance(text, str) else str(text)[:20] if digits < 4000 else ""
+        raise ValueError(f"{name}={head}...: a number of {digits:,} digits; expected at most {MAX_DIGITS} digits")
     if isinstance(text, int):
         return text
     if isinstance(text, float) and allow_decimal and math.isfinite(text):

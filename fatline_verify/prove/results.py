@@ -5,6 +5,13 @@ the rows it recomputed and keeps every other row; an interrupted run has saved e
 finished. Each row carries the fingerprint of what produced it (model, slots, budget, encoding), so
 a reader can tell an up-to-date row from a stale one, row by row. Counterexample traces are never
 deleted: a trace that a later, weaker run no longer finds still replays, and stays.
+
+Two runs into one ``--out`` at once both keep their rows: each save re-reads ``results.json`` under a
+lock on its directory (:func:`fatline_verify.locks.holding`), merges its own new rows into what is
+there and writes the whole. The file carries a digest of its content (:mod:`fatline_verify.integrity`),
+checked on every read; a file without one (written before digests) is read, and gets one at its next
+save. Either way a row is not believed against the evidence beside it: a PROVED row whose obligation
+has a counterexample that replays (its trace, or its row's configuration) is refused.
 """
 
 from __future__ import annotations
@@ -12,12 +19,35 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from ..errors import InvalidInput, OutputFailed
+from ..integrity import seal, sealed
+from ..locks import holding
 from ..model.config import Model
-from ..outputs import Kind, is_output, read_json, write_json
+from ..outputs import Kind, is_output, load_json, read_json, resolve_recorded, write_json
 from ..trace.traces import write_trace
 from .prover import NotEncodedModel, ProofResult, Task, prove_fingerprint, task_key, tasks_for, witness_path
 from .smt.solving import solver_version
-from .tasks import row_key
+from .tasks import paper_part, row_key
+
+VERDICTS = ("PROVED", "VIOLATED", "INCONCLUSIVE", "HOLDS_WITHIN_BOUNDS")
+_KEY_FIELDS = ("lemma", "form", "verdict")
+_SHOWN_FIELDS = ("rule", "slots", "seconds", "reason")
+_OPTIONAL_FIELDS: dict[str, type | tuple[type, ...]] = {
+    "rule": str,
+    "case": str,
+    "other": str,
+    "slots": int,
+    "seconds": (int, float),
+    "timeout": (int, float),
+    "reason": str,
+    "smt2": str,
+    "trace": (str, type(None)),
+    "configuration": list,
+    "any_size": bool,
+    "fingerprint": (str, type(None)),
+}
+LOCK_WAIT = 120.0
+"""Seconds a save waits for another run's save into the same directory before giving up."""
 
 
 class ProofResults:
@@ -29,11 +59,67 @@ class ProofResults:
         self.traces = traces
         self.slots, self.timeout = slots, timeout
         self.fingerprint = prove_fingerprint(model, slots, timeout)
-        self.rows: dict[str, dict[str, Any]] = {}
-        old = read_json(self.path) if self.path.is_file() and is_output(self.path, Kind.PROVE) else None
-        if old and old.get("model") == model.name:
-            for row in old.get("obligations", []):
-                self.rows[row_key(row)] = {"fingerprint": old.get("fingerprint"), **row}
+        self.rows: dict[str, dict[str, Any]] = self._read()
+        self._mine: set[str] = set()
+        """The rows this run produced: a save writes them over what another run saved meanwhile."""
+        self._contradicted()
+
+    def _read(self) -> dict[str, dict[str, Any]]:
+        """The saved rows by key (none if there is no results file of this model): the file's digest
+        checked, every row's fields of the types the tool writes."""
+        if not self.path.is_file() or not is_output(self.path, Kind.PROVE):
+            return {}
+        where = self.path.as_posix()
+        old = load_json(self.path, what=where, expected="the results.json fatline prove wrote")
+        sealed(old, self.path)
+        if old.get("model") != self.model.name:
+            return {}
+        obligations = old.get("obligations")
+        if not isinstance(obligations, list):
+            raise InvalidInput(f"{where}: obligations={str(obligations)[:40]!r}: expected a list of rows")
+        try:
+            own = {task_key(t) for t in tasks_for(self.model, two_movers=True)}
+        except NotEncodedModel:
+            own = set()
+        rows = {}
+        for k, row in enumerate(obligations):
+            _check_row(row, f"{where}: obligations[{k}]", own)
+            rows[row_key(row)] = {"fingerprint": old.get("fingerprint"), **row}
+        return rows
+
+    def _contradicted(self) -> None:
+        """Refuse a PROVED row beside a counterexample of its claim that replays: the obligation's trace
+        (where this store writes it, or where the row names it) or the row's own configuration."""
+        from .prover import replay_known
+        from .smt.claims import Spec
+
+        proved = {key: row for key, row in self.rows.items() if row.get("verdict") == "PROVED"}
+        if not proved:
+            return
+        try:
+            specs = {task_key(t): t for t in tasks_for(self.model, two_movers=True) if isinstance(t, Spec)}
+        except NotEncodedModel:
+            return
+        for key, row in proved.items():
+            if key not in specs:
+                continue
+            candidates: list[tuple[str, dict[str, Any]]] = []
+            paths = [witness_path(self.model, self.traces, key)]
+            if row.get("trace"):
+                found = resolve_recorded(row["trace"], self.path.parent)
+                paths += [found] if found is not None else []
+            for path in paths:
+                doc = read_json(path) if path.is_file() and is_output(path, Kind.TRACE) else None
+                if doc is not None:
+                    candidates.append((path.as_posix(), doc))
+            if row.get("configuration"):
+                candidates.append(("its row's configuration", {"configuration": row["configuration"]}))
+            for what, doc in candidates:
+                if replay_known(paper_part(self.model), specs[key], doc, initial=False) is not None:
+                    raise OutputFailed(
+                        f"{self.path.as_posix()}: {key} is PROVED, but {what} replays a counterexample of it; "
+                        "expected the file as fatline prove wrote it (move it away, or rerun prove for that lemma)"
+                    )
 
     def witness_paths(self, tasks: list[Task]) -> list[Path]:
         """The trace files proving ``tasks`` may write (checked before the run)."""
@@ -74,6 +160,7 @@ class ProofResults:
             "trace": trace,
             "configuration": list(r.configuration),
         }
+        self._mine.add(key)
         self.save()
 
     def ordered(self, keys: list[str] | None = None) -> list[dict[str, Any]]:
@@ -99,7 +186,37 @@ class ProofResults:
         }
 
     def save(self) -> None:
-        write_json(self.path, self.document())
+        """Re-read ``results.json`` under the directory's lock, keep every row saved meanwhile (another
+        run's), put this run's own rows over them, and write the whole (digest included)."""
+        with holding(self.path.parent, name="out", wait=LOCK_WAIT):
+            merged = self._read()
+            for key, row in self.rows.items():
+                if key in self._mine or key not in merged:
+                    merged[key] = row
+            self.rows = merged
+            write_json(self.path, seal(self.document()))
+
+
+def _check_row(row: object, where: str, own: set[str]) -> None:
+    """A results row has the fields the tool writes, of their types (a row of the model's own
+    obligations also every field a page shows); else one line naming the row and the field."""
+    if not isinstance(row, dict):
+        raise InvalidInput(f"{where}={str(row)[:40]!r}: expected a row (an object)")
+    for name in _KEY_FIELDS:
+        if not isinstance(row.get(name), str):
+            raise InvalidInput(f"{where}.{name}={str(row.get(name))[:40]!r}: expected text")
+    if row["verdict"] not in VERDICTS:
+        raise InvalidInput(f"{where}.verdict={row['verdict'][:40]!r}: expected one of {', '.join(VERDICTS)}")
+    if not isinstance(row.get("case", row.get("rule")), str):
+        raise InvalidInput(f"{where}: no case and no rule; expected the row fatline prove wrote")
+    for name, kind in _OPTIONAL_FIELDS.items():
+        value = row.get(name)
+        if name in row and (not isinstance(value, kind) or (isinstance(value, bool) and kind is not bool)):
+            raise InvalidInput(f"{where}.{name}={str(value)[:40]!r}: expected the type fatline prove writes")
+    if row_key(row) in own:
+        missing = [name for name in _SHOWN_FIELDS if name not in row]
+        if missing:
+            raise InvalidInput(f"{where}: no {missing[0]}; expected the row fatline prove wrote")
 
 
 __all__ = ["ProofResults", "witness_path"]

@@ -43,6 +43,7 @@ from typing import TYPE_CHECKING
 from ..lemmas.properties import Verdict
 from ..model.config import Model
 from ..model.numbers import Point
+from ..outputs import write_text
 from .replay import Known, Replayed, replay, replay_known
 from .small import SMALL_TEXT, given_counterexample, small_swarm_counterexample
 from .smt.claims import (
@@ -312,7 +313,7 @@ class _Search(Budget):
             return None, False
         if ans.status == "unsat":
             if self.path:
-                Path(self.path).with_suffix(".linear.smt2").write_text(lin.script(), encoding="utf-8")
+                write_text(Path(self.path).with_suffix(".linear.smt2"), lin.script())  # atomic
             return self.result(Verdict.PROVED, f"{PROVED_REASON} ({linearized(lin.refinements)})"), True
         self.linear_done = True
         self.linear_initial_done = initial

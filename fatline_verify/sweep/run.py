@@ -15,7 +15,11 @@ open, or the check budget is spent. Each finished check is saved at once (``swee
 from __future__ import annotations
 
 import contextlib
+import io
+import os
+import re
 import time
+import zipfile
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field, replace
 from functools import partial
@@ -25,10 +29,11 @@ from typing import Any
 import numpy as np
 
 from ..cache import fingerprint
-from ..errors import InvalidInput
+from ..errors import InvalidInput, OutputFailed
+from ..integrity import bytes_digest, file_digest, matches, seal, sealed
 from ..lemmas.properties import CHECKED, Lemma, LemmaResult, Verdict
 from ..model.config import Model, model_to_mapping
-from ..outputs import Kind, read_json, write_json
+from ..outputs import Kind, NotReadable, load_json, os_error_text, read_regular, write_bytes, write_json
 from .cover import cover, refutes
 from .equivalent import Equivalence, Explored, held_past_violations, same_exploration
 from .invariant import SPREAD_SAFETY, TRAPPED, Trap, spread_termination, trapped, within_known
@@ -47,6 +52,7 @@ are done or this many new states were met."""
 
 FORMAT = Kind.SWEEP.value
 VERSION = 1
+STATUS_FILE = "status.npz"
 
 
 @dataclass(frozen=True, slots=True)
@@ -186,36 +192,118 @@ class Sweep:
 
     def resume(self) -> bool:
         """Load a saved sweep with the same settings; ``False`` if there is none. A saved sweep with
-        other settings is refused (it is not this sweep's to overwrite)."""
-        data = read_json(self.json_path)
-        if data is None:
+        other settings is refused (it is not this sweep's to overwrite), and so is one whose files do
+        not match the digests ``sweep.json`` records (or, for a sweep saved before digests, whose
+        ``status.npz`` does not match the counts ``sweep.json`` records): never a verdict nobody computed."""
+        if not self.json_path.exists():
             return False
-        if data.get("format") != FORMAT:
+        where = f"out={str(self.out)!r}: sweep.json"
+        data = load_json(self.json_path, what=where, expected="the sweep.json fatline sweep wrote (or a new --out)")
+        if not isinstance(data, dict) or data.get("format") != FORMAT:
             raise InvalidInput(f"out={str(self.out)!r}: sweep.json there is not a fatline sweep; expected a new --out")
+        digests = data.get("files") if sealed(data, self.json_path) else None
         if data.get("fingerprint") != self.fingerprint():
             raise InvalidInput(
                 f"out={str(self.out)!r}: holds a sweep with other settings (model, --vary, --lemma or bounds); "
                 "expected another --out, or the same settings to resume it"
             )
-        with np.load(self.status_path) as saved:
-            for lemma in self.lemmas:
-                got = saved[lemma.value]
-                if got.shape != self.status[lemma].shape:
-                    raise InvalidInput(f"out={str(self.out)!r}: status.npz does not match sweep.json")
-                self.status[lemma] = got.astype(np.uint8)
-        self.witnesses = list(data["witnesses"])
-        self.checks = list(data["checks"])
-        self.replays = int(data.get("replays", 0))
+        witnesses, checks, replays = data.get("witnesses"), data.get("checks"), data.get("replays", 0)
+        if (
+            not isinstance(witnesses, list)
+            or not isinstance(checks, list)
+            or not isinstance(replays, int)
+            or not all(self._witness_ok(w) for w in witnesses)
+            or (
+                digests is not None
+                and (
+                    not isinstance(digests, dict)
+                    or STATUS_FILE not in digests
+                    or set(digests) != {STATUS_FILE, *(w["trace"] for w in witnesses)}
+                )
+            )
+        ):
+            raise InvalidInput(
+                f"{where}: witnesses, checks, replays or files malformed; expected the file fatline sweep wrote"
+            )
+        if digests is not None:
+            self._roll_forward(digests.get(STATUS_FILE))
+            for name, digest in digests.items():
+                if not matches(self.out / name, digest):
+                    raise OutputFailed(
+                        f"{(self.out / name).as_posix()}: its content does not match the digest sweep.json records "
+                        "(changed since fatline sweep wrote it); expected the sweep as fatline left it, or a new --out"
+                    )
+        try:
+            raw = read_regular(self.status_path)
+            with np.load(io.BytesIO(raw), allow_pickle=False) as saved:
+                loaded = {lemma: saved[lemma.value] for lemma in self.lemmas}
+        except (NotReadable, KeyError, ValueError, OSError, EOFError, zipfile.BadZipFile) as exc:
+            raise InvalidInput(
+                f"out={str(self.out)!r}: status.npz cannot be read ({exc}); expected the sweep as fatline left it"
+            ) from None
+        for lemma, got in loaded.items():
+            if got.shape != self.status[lemma].shape or got.dtype.kind not in "iu" or (len(got) and got.max() > 3):
+                raise InvalidInput(f"out={str(self.out)!r}: status.npz does not match sweep.json")
+            self.status[lemma] = got.astype(np.uint8)
+        self.witnesses = list(witnesses)
+        self.checks = list(checks)
+        self.replays = replays
+        if digests is None:  # saved before digests: its counts must be the ones sweep.json records
+            self._agrees(data)
         return True
 
+    def _witness_ok(self, w: object) -> bool:
+        """A witness entry names a trace inside ``traces/`` of one of the sweep's lemmas."""
+        if not isinstance(w, dict) or w.get("lemma") not in {lemma.value for lemma in CHECKED}:
+            return False
+        trace = w.get("trace")
+        return isinstance(trace, str) and re.fullmatch(rf"traces/{re.escape(w['lemma'])}-\d+\.json", trace) is not None
+
+    def _agrees(self, data: dict[str, Any]) -> None:
+        """A sweep saved before digests: each lemma's counts (and first readings where it holds) in
+        ``status.npz`` must be those ``sweep.json`` records beside them."""
+        recorded = {s.get("lemma"): s for s in data.get("lemmas", []) if isinstance(s, dict)}
+        for lemma in self.lemmas:
+            mine, theirs = self.lemma_summary(lemma), recorded.get(lemma.value, {})
+            keys = ("refuted", "holds", "inconclusive", "open", "holds_under")
+            if any(mine[k] != theirs.get(k) for k in keys):
+                raise OutputFailed(
+                    f"{self.status_path.as_posix()}: does not match the counts sweep.json records for {lemma.value} "
+                    "(changed since fatline sweep wrote it); expected the sweep as fatline left it, or a new --out"
+                )
+
+    def _pending(self, digest: str) -> Path:
+        """Where a save puts the new status before ``sweep.json`` names it (named by its digest)."""
+        return self.out / f".status-{digest.removeprefix('sha256:')[:16]}.npz"
+
+    def _roll_forward(self, digest: object) -> None:
+        """Finish a save killed between writing ``sweep.json`` and renaming the status it names."""
+        if isinstance(digest, str) and not matches(self.status_path, digest) and matches(self._pending(digest), digest):
+            os.replace(self._pending(digest), self.status_path)
+
     def save(self) -> None:
+        """Save the status, the witnesses' digests and everything else: the status under a name of its own,
+        then ``sweep.json`` (the manifest, last: the digests of the status and of every witness trace), then
+        the status renamed into place. Killed anywhere, the next run finds the old sweep or the new one
+        (:meth:`_roll_forward`), never a status without its counterexamples."""
         self.out.mkdir(parents=True, exist_ok=True)
-        tmp = self.out / ".status.npz.tmp"
-        with tmp.open("wb") as fh:
-            arrays: dict[str, Any] = {lemma.value: self.status[lemma] for lemma in self.lemmas}
-            np.savez_compressed(fh, **arrays)
-        tmp.replace(self.status_path)
-        write_json(self.json_path, self.to_json())
+        buffer = io.BytesIO()
+        arrays: dict[str, Any] = {lemma.value: self.status[lemma] for lemma in self.lemmas}
+        np.savez_compressed(buffer, **arrays)
+        raw = buffer.getvalue()
+        digest = bytes_digest(raw)
+        write_bytes(self._pending(digest), raw)
+        files = {STATUS_FILE: digest}
+        for w in self.witnesses:
+            files[w["trace"]] = file_digest(self.out / w["trace"])
+        write_json(self.json_path, seal({**self.to_json(), "files": files}))
+        try:
+            os.replace(self._pending(digest), self.status_path)
+        except OSError as exc:
+            raise OutputFailed(os_error_text(self.status_path, exc)) from None
+        for stale in self.out.glob(".status-*.npz"):  # the remains of saves killed before their manifest
+            with contextlib.suppress(OSError):
+                stale.unlink()
 
     # --- the loop --------------------------------------------------------------------------------
     def open_count(self) -> int:

@@ -29,7 +29,7 @@ from ..lemmas.properties import SAFETY, Lemma
 from ..model.config import Model, model_from_mapping, model_to_mapping
 from ..model.numbers import Point, parse_number
 from ..model.swarm import State
-from ..outputs import write_json
+from ..outputs import NotReadable, parse_json, read_regular, write_json
 from ..schedulers.base import Step
 from ..schedulers.round import lost_edges
 from ..schedulers.systems import TransitionSystem, system_for
@@ -170,7 +170,10 @@ def _validator() -> Any:
 def validate(doc: object, *, where: str = "trace") -> None:
     """Check ``doc`` against the schema; one-line :class:`InvalidTrace` naming the first problem (the
     error ``jsonschema.validate`` would raise)."""
-    exc = jsonschema.exceptions.best_match(_validator().iter_errors(doc))
+    try:
+        exc = jsonschema.exceptions.best_match(_validator().iter_errors(doc))
+    except RecursionError:
+        raise InvalidTrace(f"{where}: arrays or objects nested too deep; expected a trace JSON file") from None
     if exc is not None:
         path = "/".join(str(p) for p in exc.absolute_path) or "(top level)"
         raise InvalidTrace(f"{where}: at {path}: {exc.message}") from None
@@ -180,13 +183,13 @@ def load_trace(path: str | Path) -> dict[str, Any]:
     """Read and schema-check a trace file."""
     p = Path(path)
     try:
-        doc = json.loads(p.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise InvalidTrace(f"trace={str(p)!r}: no such file; expected a trace JSON file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InvalidTrace(f"trace={str(p)!r}: cannot be read ({exc.__class__.__name__})") from None
-    except json.JSONDecodeError as exc:
-        raise InvalidTrace(f"trace={str(p)!r}: not JSON (line {exc.lineno}: {exc.msg})") from None
+        data = read_regular(p)  # a FIFO or a device is refused, not waited on or read without end
+    except NotReadable as exc:
+        raise InvalidTrace(f"trace={str(p)!r}: {exc}; expected a trace JSON file") from None
+    try:
+        doc = parse_json(data)
+    except ValueError as exc:
+        raise InvalidTrace(f"trace={str(p)!r}: {exc}; expected a trace JSON file") from None
     validate(doc, where=str(p))
     return doc  # type: ignore[no-any-return]
 

@@ -161,8 +161,9 @@ def smt2(ob: Obligation) -> str:
 
 
 def write(ob: Obligation, path: Path) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(smt2(ob), encoding="utf-8")
+    from ...outputs import write_text
+
+    write_text(path, smt2(ob))  # atomic, never through a link
 
 
 def solve(ob: Obligation, timeout_s: float) -> Answer:

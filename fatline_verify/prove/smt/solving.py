@@ -215,8 +215,9 @@ def smt2(built: Built) -> str:
 
 
 def write(built: Built, path: Path) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(smt2(built), encoding="utf-8")
+    from ...outputs import write_text
+
+    write_text(path, smt2(built))  # atomic, never through a link
 
 
 def solver_version() -> str:
