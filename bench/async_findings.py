@@ -5,7 +5,7 @@ For each shipped model (or ``--model``), the model is checked under its own sche
 ``scheduler = async`` (``async_steps`` from ``--steps``, default the model's) for ``--robots`` on
 ``--window``; a row is printed for every lemma whose verdict differs, with the ASYNC witness's length,
 and every such witness is written under ``--traces`` (replayed before it is written, as every
-witness). The table is the README's "What ASYNC adds" section.
+witness). The table is docs/async.md ("What ASYNC adds").
 
     python bench/async_findings.py --robots 2..4 --window 9x9 --traces reports/traces
 """

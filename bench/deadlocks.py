@@ -3,7 +3,7 @@
 on one vertical, and how many of them are initial configurations.
 
 Usage: python bench/deadlocks.py MODEL ROBOTS [--q Q] [--window W] [--show K]
-(from the repository root). The README's "Toward liveness" table is this script's output for
+(from the repository root). The "Toward liveness" table of docs/repaired.md is this script's output for
 models/repaired.toml, bench/repaired-progress.toml and bench/repaired-corner.toml at q = 1 and 2."""
 
 from __future__ import annotations

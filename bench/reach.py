@@ -1,7 +1,7 @@
 #!/usr/bin/env python
 """Which initial configurations no rule set of the repaired family brings to a line, and which leg
-kinds would free them (``fatline reach``), as the README's table: per family, the stuck initial
-configurations, the seconds, and the rounds that failed the executable model's checks (not followed).
+kinds would free them (``fatline reach``), as the table of docs/repaired.md: per family, the stuck
+initial configurations, the seconds, and the rounds that failed the executable model's checks (not followed).
 
 Usage: python bench/reach.py [--quick]   (from the repository root; --quick: 2-4 robots at q = 1)."""
 

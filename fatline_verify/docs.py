@@ -2,7 +2,7 @@
 run from the repository root) from ``options.py``, so the file the reports link to never goes stale.
 
 The file carries the report's text marker, so it is rewritten freely but a file of another kind at
-``PATH`` is not overwritten (DESIGN.md, "Artefacts are never destroyed by default").
+``PATH`` is not overwritten (docs/commands.md, "Outputs: nothing destroyed by default").
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """Where results are written, and the rule that nothing is destroyed.
 
-DESIGN.md, "Artefacts are never destroyed by default": a file that is not a previous output of the
+docs/commands.md, "Outputs: nothing destroyed by default": a file that is not a previous output of the
 same kind is not overwritten without ``--force``; output paths are checked before the computation
 starts; names taken from model files never leave the output directory. Every output carries a
 format marker so that "a previous output of the same kind" is decidable: JSON outputs a top-level

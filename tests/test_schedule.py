@@ -106,7 +106,7 @@ def test_schedule_stops_early_only_at_a_violation(capsys, tmp_path):
 
 
 def test_schedule_plays_on_past_a_deadlock(capsys, tmp_path):
-    # (0,0), (0,3), (1,5): the README's deadlock; every round is still played, nothing moves
+    # (0,0), (0,3), (1,5): the deadlock of docs/findings.md; every round is still played, nothing moves
     code, _, _, trace = simulate_to(capsys, tmp_path, "--init", "0,0 0,3 1,5", "--schedule", "all;0;1;2")
     doc = load_trace(trace)
     assert code == 1

@@ -1,20 +1,20 @@
 """Checkpoints of a breadth-first search: one file per level, written atomically, and a manifest.
 
-DESIGN.md: "after each BFS level, write the visited shards, the frontier and the counters atomically
-under ``--checkpoint DIR``; running the same command again continues to the identical result. A run
-killed at any instant loses at most one level of work." The visited set is the union of the levels'
-keys and the frontier is the last level, so the level files are the shards: ``level-00000.npz`` holds
-the initial keys, ``level-L.npz`` the states first reached at depth L (keys, parents, actions) and the
-expansion of level L-1 (per state: enabled, goal; per transition: source, action, successor key,
-flags). Each file is written to a temporary name (unique to the process) and renamed, then
-``manifest.json`` (likewise, last) records how many levels are complete and the SHA-256 of every level
-file; a level file beyond the manifest is the remains of a killed write and is written again, and a
-level file (or a manifest) whose content does not match its digest is refused in one line, never
-searched on from (a flipped bit in a transition's flags would otherwise be a verdict nobody computed).
-The manifest names the run — model, robots, bound, a digest of the initial keys,
-``after_violation`` — and a directory holding another run is refused; the engine and the number of
-workers are not part of it (they do not change the result), nor are the limits: a run stopped by
-``--max-states`` resumes further with a larger one.
+docs/checker.md, "Shards, workers, checkpoints, memory": after each BFS level, the visited shards, the
+frontier and the counters are written atomically under ``--checkpoint DIR``; running the same command
+again continues to the identical result, and a run killed at any instant loses at most one level of
+work. The visited set is the union of the levels' keys and the frontier is the last level, so the level
+files are the shards: ``level-00000.npz`` holds the initial keys, ``level-L.npz`` the states first
+reached at depth L (keys, parents, actions) and the expansion of level L-1 (per state: enabled, goal;
+per transition: source, action, successor key, flags). Each file is written to a temporary name (unique
+to the process) and renamed, then ``manifest.json`` (likewise, last) records how many levels are
+complete and the SHA-256 of every level file; a level file beyond the manifest is the remains of a
+killed write and is written again, and a level file (or a manifest) whose content does not match its
+digest is refused in one line, never searched on from (a flipped bit in a transition's flags would
+otherwise be a verdict nobody computed). The manifest names the run — model, robots, bound, a digest of
+the initial keys, ``after_violation`` — and a directory holding another run is refused; the engine and
+the number of workers are not part of it (they do not change the result), nor are the limits: a run
+stopped by ``--max-states`` resumes further with a larger one.
 """
 
 from __future__ import annotations

@@ -1,11 +1,12 @@
 """One hash partition of the breadth-first search: its share of the visited set and of the frontier.
 
-DESIGN.md, "The explorer": the visited set and the frontier are partitioned by a hash of the canonical
-key into P shards; each level every shard expands its frontier, routes successor keys to their owner
-shard, and the owners de-duplicate. A :class:`Shard` is plain data and numpy, so the same object serves
-in process (P = 1), as a Dask actor on a worker (:mod:`.workers`), or rebuilt from a checkpoint. The
-shard never numbers states: the coordinator (:mod:`.search`) numbers each level in key order after the
-merge, which is what makes state ids, parents and witnesses independent of P.
+docs/checker.md, "Shards, workers, checkpoints, memory": the visited set and the frontier are
+partitioned by a hash of the canonical key into P shards; each level every shard expands its frontier,
+routes successor keys to their owner shard, and the owners de-duplicate. A :class:`Shard` is plain data
+and numpy, so the same object serves in process (P = 1), as a Dask actor on a worker (:mod:`.workers`),
+or rebuilt from a checkpoint. The shard never numbers states: the coordinator (:mod:`.search`) numbers
+each level in key order after the merge, which is what makes state ids, parents and witnesses
+independent of P.
 """
 
 from __future__ import annotations

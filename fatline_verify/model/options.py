@@ -1,9 +1,9 @@
 """The interpretation catalogue: one named option per open point of the paper.
 
 The paper is informal; each place where its text admits several precise readings is an option
-here, every reading selectable, the default marked. The rows follow ``AMBIGUITIES.md``; each
-option's spec quotes the paper's words it reads. ``fatline explain`` prints this catalogue. The
-repairs, changes to the algorithm rather than readings of it, are options too; their enums and
+here, every reading selectable, the default marked. ``python -m fatline_verify.docs`` publishes it as
+``docs/readings.md``; each option's spec quotes the paper's words it reads. ``fatline explain`` prints
+this catalogue. The repairs, changes to the algorithm rather than readings of it, are options too; their enums and
 entries live in :mod:`fatline_verify.rules.repaired.options`.
 """
 
@@ -405,7 +405,7 @@ CATALOGUE: dict[str, OptionSpec] = {
 
 @dataclass(frozen=True, slots=True)
 class Options:
-    """One reading per open point; the defaults are the readings marked (default) in AMBIGUITIES.md."""
+    """One reading per open point; the defaults are the readings marked (default) in docs/readings.md."""
 
     quadrants: Quadrants = Quadrants.LOWER_RIGHT
     bands: Bands = Bands.DISC

@@ -5,7 +5,7 @@ parameters and bounds, the prover's settings, the tool's version). An up-to-date
 so regenerating a report from committed results is byte-identical; a stale one is recomputed —
 for the prover, only the obligations whose rows are stale.
 
-Nothing is lost (DESIGN.md, "Artefacts are never destroyed by default"): reporting one model keeps
+Nothing is lost (docs/commands.md, "Outputs: nothing destroyed by default"): reporting one model keeps
 every other model's row in the matrix; counterexample traces in the corpus ``reports/traces/`` are
 never deleted (a trace a later run no longer finds still replays, and the corpus tests replay it);
 a file the report did not write is not overwritten without ``force``. Every file written carries

@@ -7,8 +7,9 @@ none of them), its decision function, how its pictures are drawn and whether the
 against another rule set's case table.
 
 Rule sets come from this package (:data:`BUILTIN`) and from installed packages that declare an entry
-point in the group ``fatline.plugins`` (see the README, "Your own rule set"): the entry point names a
-module whose import calls :func:`register`, or a callable that does when called.
+point in the group ``fatline.plugins`` (see the README, "Plug-ins: your own rule set, lemma or
+scheduler"): the entry point names a module whose import calls :func:`register`, or a callable that
+does when called.
 """
 
 from __future__ import annotations
