@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from fractions import Fraction
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -26,3 +27,13 @@ def task_named(model: Model, key: str) -> Any:
 @pytest.fixture
 def model() -> Model:
     return make_model()
+
+
+@pytest.fixture(scope="session")
+def committed_reports() -> list[Any]:
+    """Every model's report as committed (``reports/``, ``proofs/``), by model name: read once a
+    session, since reading it schema-checks every corpus trace (seconds). Tests only read it."""
+    from fatline_verify.report.build import _earlier
+
+    root = Path(__file__).resolve().parent.parent
+    return sorted(_earlier([], root / "reports", root / "proofs"), key=lambda r: r.model.name)

@@ -70,16 +70,16 @@ def test_step_through_a_counterexample(browser, tmp_path):
     assert shot.stat().st_size > 10_000
 
 
-def _render_fresh(tmp_path: Path) -> Path:
-    """The report pages as this code renders them from the committed results, in ``tmp_path``; the
-    pictures are the committed ones (linked), so the page is what a regenerated report shows."""
-    from fatline_verify.report.build import _earlier, stamp
+def _render_fresh(tmp_path: Path, reports: list) -> Path:
+    """The report pages as this code renders them from the committed results (``reports``: conftest.py's
+    ``committed_reports``), in ``tmp_path``; the pictures are the committed ones (linked), so the page
+    is what a regenerated report shows."""
+    from fatline_verify.report.build import stamp
     from fatline_verify.report.pages import ASSETS, cross_model_html, model_html
 
     out = tmp_path / "reports"
     out.mkdir()
     (tmp_path / "docs").symlink_to(ROOT / "docs")
-    reports = sorted(_earlier([], ROOT / "reports", ROOT / "proofs"), key=lambda r: r.model.name)
     for name, text in ASSETS.items():
         (out / name).write_text(stamp(name, text), encoding="utf-8")
     for r in reports:
@@ -90,10 +90,10 @@ def _render_fresh(tmp_path: Path) -> Path:
     return out
 
 
-def test_the_pages_fit_a_1400_px_window(browser, tmp_path):
+def test_the_pages_fit_a_1400_px_window(browser, tmp_path, committed_reports):
     """The matrix page (and every model page) has no horizontal scroll bar at 1400 px, and the
     matrix stays inside the page's column."""
-    out = _render_fresh(tmp_path)
+    out = _render_fresh(tmp_path, committed_reports)
     browser.set_window_size(1400, 1000)
     pages = [out / "index.html", *sorted(out.glob("*/index.html"))]
     for page in pages:

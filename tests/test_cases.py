@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from fractions import Fraction as Fr
 
+import pytest
 import z3
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -115,10 +116,22 @@ def _encoded_case(model, case, points):
     return (value(dest[0]), value(dest[1]))
 
 
+@pytest.mark.slow  # 40 crowded swarms, each encoded for every case; the default tier draws 10 (below)
 @settings(max_examples=40, deadline=None)
 @given(readings(), swarms(crowded=True))
 def test_the_encoding_of_each_case_agrees_with_decide(opts, swarm):
     """Exactly the case ``decide`` falls in is satisfiable with the swarm fixed, with the same destination."""
+    _encoding_agrees(opts, swarm)
+
+
+@settings(max_examples=10, deadline=None)
+@given(readings(), swarms(crowded=True))
+def test_the_encoding_of_each_case_agrees_with_decide_on_a_few_swarms(opts, swarm):
+    """The fast representative of the above: the same check on 10 random swarms."""
+    _encoding_agrees(opts, swarm)
+
+
+def _encoding_agrees(opts, swarm) -> None:
     model = make_model(**opts)
     decision = decide(_visible(model, swarm), model)
     expected = case_of(decision, model)

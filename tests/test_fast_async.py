@@ -48,10 +48,17 @@ def assert_same_expansion(a: Expansion, b: Expansion) -> None:
         assert np.array_equal(x, y), f.name
 
 
-@pytest.mark.parametrize("K", [1, 2, 3])
-@pytest.mark.parametrize(
-    "readings", READINGS, ids=[",".join(f"{k}={v}" for k, v in r.items()) or "default" for r in READINGS]
-)
+def _engine_cases():
+    """Every reading at K = 1, 2, 3; K = 3 (the most interleavings) is in the default tier for the
+    default readings and non-rigid motion (the readings it changes most), in the slow tier otherwise."""
+    for readings in READINGS:
+        name = ",".join(f"{k}={v}" for k, v in readings.items()) or "default"
+        for K in (1, 2, 3):
+            slow = K == 3 and readings not in ({}, {"motion": "non-rigid"})
+            yield pytest.param(readings, K, id=f"{name}-{K}", marks=[pytest.mark.slow] if slow else [])
+
+
+@pytest.mark.parametrize(("readings", "K"), list(_engine_cases()))
 def test_fast_async_engine_equals_scalar_engine(readings, K):
     model = asynchronous(make_model(**readings), K)
     system = system_for(model)

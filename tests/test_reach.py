@@ -69,19 +69,23 @@ def test_the_pocket_is_stuck_and_left_legs_free_it():
         confirm_stuck(pocket, Family(model, PROVED | {Kind.LEFT}))
 
 
-def test_two_phases_find_what_one_search_of_every_set_of_movers_finds():
+@pytest.mark.parametrize(
+    ("q", "n"),
+    [(1, 3), pytest.param(1, 4, marks=pytest.mark.slow), (2, 3)],  # 4 robots: the slow tier
+    ids=["q1-3robots", "q1-4robots", "q2-3robots"],
+)
+def test_two_phases_find_what_one_search_of_every_set_of_movers_finds(q, n):
     """Phase 1 (one mover) is a shortcut: the stuck sets equal those of one search with every set of movers."""
     from fatline_verify.repair.reach import _Graph, starts
 
-    for q, n in ((1, 3), (1, 4), (2, 3)):
-        model = load_model("repaired").with_q(q)
-        family = Family(model)
-        first = starts(model, n, (9, 9))
-        graph = _Graph(family.any_movers, family.safe)
-        graph.close(first)
-        good = graph.distances(lambda s, m=model: is_goal(s, m))
-        assert tuple(sorted(s for s in first if s not in good)) == reach(model, n, (9, 9)).stuck
-        assert graph.unsafe == 0  # the proved legs never fail the executable model's checks
+    model = load_model("repaired").with_q(q)
+    family = Family(model)
+    first = starts(model, n, (9, 9))
+    graph = _Graph(family.any_movers, family.safe)
+    graph.close(first)
+    good = graph.distances(lambda s, m=model: is_goal(s, m))
+    assert tuple(sorted(s for s in first if s not in good)) == reach(model, n, (9, 9)).stuck
+    assert graph.unsafe == 0  # the proved legs never fail the executable model's checks
 
 
 def _rules_reach_a_line(state, model, limit=20_000) -> bool:

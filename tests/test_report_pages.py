@@ -18,7 +18,6 @@ from conftest import make_model  # tests/ is on sys.path under both `pytest` and
 from fatline_verify.docs import main as docs_main
 from fatline_verify.model.config import Model
 from fatline_verify.model.options import CATALOGUE
-from fatline_verify.report.build import _earlier
 from fatline_verify.report.data import ModelReport
 from fatline_verify.report.pages import cross_model_html, cross_model_markdown, featured, html_numbers, viewer
 from fatline_verify.report.pictures import frame_svg, frames
@@ -218,8 +217,8 @@ def test_each_card_shows_its_own_smallest_witness():
 
 
 @pytest.fixture(scope="module")
-def shipped() -> list[ModelReport]:
-    reports = sorted(_earlier([], ROOT / "reports", ROOT / "proofs"), key=lambda r: r.model.name)
+def shipped(committed_reports) -> list[ModelReport]:
+    reports = committed_reports  # conftest.py: read once a session, shared with test_browser.py
     assert len(reports) >= 2
     return reports
 

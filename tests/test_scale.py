@@ -281,6 +281,8 @@ def test_checkpoint_names_the_run():
     assert a == Checkpoint(None, model, 3, (9, 9), np.arange(3), "stop").run
 
 
+@pytest.mark.slow  # three CLI processes on 5 robots in a 14x14 bound; the resume logic itself is
+# checked in the default tier in process (killed at a random level, a level file beyond the manifest)
 def test_sigkill_then_the_same_command_gives_the_identical_json(tmp_path):
     """A real kill -9 while the search writes its checkpoint, then the same command again."""
     args = [sys.executable, "-m", "fatline_verify.cli", "check", "--robots", "5", "--bound", "14x14", "--engine"]

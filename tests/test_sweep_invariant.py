@@ -40,7 +40,12 @@ def checked():
     return space, found
 
 
-@pytest.mark.parametrize("lemma", TRAPPED)
+@pytest.mark.parametrize(
+    "lemma",
+    # termination's closure is in the default tier below (along a rank, the ranked states of several
+    # checks, the spread from one reading); its exhaustive run here is in the slow tier
+    [pytest.param(lemma, marks=pytest.mark.slow) if lemma is Lemma.TERMINATION else lemma for lemma in TRAPPED],
+)
 def test_every_trapped_reading_holds_as_its_own_check_says(checked, lemma):
     """Soundness, exhaustively: from every reading where the lemma holds, the readings its states trap
     are ones where the checker, run on them alone, says HOLDS_WITHIN_BOUNDS; and the closure is not
@@ -234,7 +239,12 @@ STEP_SPACES = {
 """Per step lemma, a small space where it holds under some readings and not others."""
 
 
-@pytest.mark.parametrize("lemma", SPREAD_SAFETY, ids=lambda lemma: lemma.value)
+@pytest.mark.parametrize(
+    "lemma",
+    # no-collision spreads over the same space of the same model as connectivity: slow tier
+    [pytest.param(lemma, marks=pytest.mark.slow) if lemma is Lemma.NO_COLLISION else lemma for lemma in SPREAD_SAFETY],
+    ids=lambda lemma: lemma.value,
+)
 def test_grown_the_spread_closes_a_step_lemma_exactly_where_its_own_check_finds_it_holding(lemma):
     """A step lemma spread from one reading's states: the readings left are exactly those whose own
     check finds no violating transition (some hold and some do not, so both sides are tested)."""
