@@ -75,6 +75,7 @@ reason it cannot see (a robot out of its view) -- the README, "A live rule set?"
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
 from ...model.config import Model
@@ -225,14 +226,15 @@ def allowed(
 
 
 def candidates(snapshot: Sequence[Point], model: Model) -> list[tuple[str, str, Point]]:
-    """The moves r tries, in order: (rule, kind, step)."""
+    """The moves r tries, in order: (rule, kind, step). Steps are whole lattice units; positions seen may be
+    exact fractions (a trace from a finer lattice replayed under this rule set)."""
     rho = model.radius
     right = max(0, *(c[0] for c in snapshot))
     below = [c[1] for c in snapshot if c[0] == 0 and c[1] < 0]
     above = [c[1] for c in snapshot if c[0] == 0 and c[1] > 0]
     tries: list[tuple[str, str, Point]] = []
     if right > 0:
-        tries += [("right", R, (s, 0)) for s in range(min(rho, right), 0, -1)]
+        tries += [("right", R, (s, 0)) for s in range(min(rho, math.floor(right)), 0, -1)]
         tries += [("down-right", DR, (1, -1)), ("up-right", UR, (1, 1))]
         ahead = [c[1] for c in snapshot if c[0] > 0 and -2 * rho < c[1] < 2 * rho]
         if ahead:
