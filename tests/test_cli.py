@@ -70,7 +70,11 @@ def test_shipped_models_load_and_differ_as_documented():
     stems = [p.stem for p in shipped_models()]
     assert stems == sorted(stems) and {"paper", "paper-literal"} <= set(stems)
     for stem in set(stems) - {"paper", "paper-literal", "repaired"}:  # the variants differ from paper in one reading
-        assert len(load_model(ROOT / "models" / f"{stem}.toml").options.differences()) == 1, stem
+        model = load_model(ROOT / "models" / f"{stem}.toml")
+        if model.rules != "paper":  # a rule set of its own reads none of the paper's readings
+            assert model.options.differences() == {}, stem
+            continue
+        assert len(model.options.differences()) == 1, stem
     repaired = load_model(ROOT / "models" / "repaired.toml").options.differences()  # repairs and one reading
     assert {k for k in repaired if not k.startswith("repair_")} == {"uncovered"} and len(repaired) > 1
 

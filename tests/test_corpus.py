@@ -26,7 +26,8 @@ def test_the_corpus_is_not_empty_and_covers_every_shipped_model():
     assert CORPUS
     names = {p.name for p in CORPUS}
     for model in shipped_models():
-        assert any(n.startswith(f"{model.stem}-check-") for n in names), model.stem
+        if "VIOLATED" in load_model(model).expected.values():  # a model that breaks a lemma has its witness here
+            assert any(n.startswith(f"{model.stem}-check-") for n in names), model.stem
 
 
 @pytest.mark.parametrize("path", CORPUS, ids=lambda p: p.stem)

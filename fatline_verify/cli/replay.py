@@ -1,6 +1,6 @@
 """``fatline replay``: recompute traces from their initial positions and compare every recorded value.
 
-Under the trace's own model (or ``--model`` with the same readings and parameters) any difference
+Under the trace's own model (or ``--model`` with the same rule set, readings and parameters) any difference
 means the file was changed: "recorded value differs". Under another model ``M`` a difference is a
 finding about ``M``: "the counterexample is gone under M" when the recorded violation (or, for a
 trace without one, the recorded outcome) no longer happens, else "still VIOLATED (lemma) under M;
@@ -24,12 +24,12 @@ from .common import EXIT_BAD, EXIT_FOUND, EXIT_OK, add_command, add_force, emit,
 
 
 def _same_model(doc: dict[str, Any], model: Model) -> bool:
-    """Whether ``model`` has the trace's own readings and parameters (its name may differ)."""
+    """Whether ``model`` has the trace's own rule set, readings and parameters (its name may differ)."""
     try:
         own = trace_model(doc)
     except FatlineError:
         return False
-    return own.options == model.options and own.parameters == model.parameters
+    return own.rules == model.rules and own.options == model.options and own.parameters == model.parameters
 
 
 def _first(diffs: list[str]) -> str:

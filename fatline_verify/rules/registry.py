@@ -36,7 +36,11 @@ MODEL_OPTIONS = frozenset({"scheduler", "motion", "timing", "contact", "goal"})
 GROUP = "fatline.plugins"
 """The entry-point group a plug-in package declares."""
 
-BUILTIN = ("fatline_verify.rules.paper.rule_set", "fatline_verify.rules.repaired.rule_set")
+BUILTIN = (
+    "fatline_verify.rules.paper.rule_set",
+    "fatline_verify.rules.repaired.rule_set",
+    "fatline_verify.rules.certified.rule_set",
+)
 """The modules that register this package's own rule sets."""
 
 
