@@ -1,31 +1,99 @@
-"""Benchmark the prover from its saved results: verdicts, seconds per obligation and encoding sizes.
+"""Benchmark the prover: from its saved results, or afresh (wall clock against solver seconds).
 
 python bench/prove.py [MODEL ...] [--proofs proofs]
+python bench/prove.py --startup N
+python bench/prove.py --run MODEL [--jobs J] [--lemma L]
 
-Reads ``proofs/MODEL/results.json`` (written by ``fatline prove MODEL``) and the ``.smt2`` files it
-names; prints per model the verdict counts, the median and maximum solver seconds, and the sizes of
-the written obligations (bytes, assertions). To measure afresh: ``fatline prove MODEL --out DIR``
-first, then this script with ``--proofs DIR``.
+The first form reads ``proofs/MODEL/results.json`` (written by ``fatline prove MODEL``) and the
+``.smt2`` files it names; prints per model the verdict counts, the median and maximum solver seconds,
+and the sizes of the written obligations (bytes, assertions).
+
+``--startup N``: what an obligation costs before its solver starts. N calls, one after another, each
+in its own process the way ``fatline prove`` runs an obligation (:func:`fatline_verify.fresh.run_fresh`),
+each importing the prover and returning; prints the seconds per call.
+
+``--run MODEL``: ``fatline prove MODEL`` into a temporary copy of ``--proofs`` (so every earlier
+counterexample is replayed first, as in this repository: the solver's own work is small and the
+start-up shows), one obligation at a time unless ``--jobs``; prints the wall clock per obligation,
+the solver seconds per obligation (the rows' ``seconds``) and the difference, the cost of running an
+obligation at all.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import shutil
 import statistics
+import subprocess
+import sys
+import tempfile
+import time
 from collections import Counter
 from pathlib import Path
 
 from fatline_verify.text import table
 
+PRELOAD = "import fatline_verify.prove.search, fatline_verify.prove.legs, fatline_verify.prove.prover"
+"""What a real obligation imports before it solves (``exec`` of it is a picklable call that returns None)."""
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("models", nargs="*")
-    parser.add_argument("--proofs", default="proofs")
-    args = parser.parse_args()
-    root = Path(args.proofs)
-    names = args.models or sorted(p.parent.name for p in root.glob("*/results.json"))
+
+def startup(calls: int) -> None:
+    from fatline_verify.fresh import run_fresh
+
+    got: list[float] = []
+    t0 = time.perf_counter()
+    last = t0
+
+    def done(_: int, __: object) -> None:
+        nonlocal last
+        now = time.perf_counter()
+        got.append(now - last)
+        last = now
+
+    run_fresh([(exec, (PRELOAD,), {})] * calls, 1, done)
+    total = time.perf_counter() - t0
+    print(
+        f"{calls} fresh processes, one at a time, each importing the prover: {total:.2f} s, "
+        f"{total / calls:.3f} s per obligation (first {got[0]:.3f} s, median {statistics.median(got):.3f} s)"
+    )
+
+
+def run(model: str, proofs: Path, jobs: int, lemma: str | None) -> None:
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "proofs"
+        shutil.copytree(proofs, out)
+        argv = [
+            sys.executable,
+            "-m",
+            "fatline_verify.cli",
+            "prove",
+            model,
+            "--out",
+            str(out),
+            "--jobs",
+            str(jobs),
+            "-q",
+        ]
+        if lemma:
+            argv += ["--lemma", lemma]
+        t0 = time.perf_counter()
+        subprocess.run(argv, check=False, stdout=subprocess.DEVNULL)
+        wall = time.perf_counter() - t0
+        rows = json.loads((out / model / "results.json").read_text())["obligations"]
+        ran = len(rows) if lemma is None else sum(1 for r in rows if r["lemma"] == lemma)
+        solver = sum(r["seconds"] for r in rows if lemma is None or r["lemma"] == lemma)
+    per = wall * jobs / ran
+    print(
+        f"fatline prove {model}{f' --lemma {lemma}' if lemma else ''} --jobs {jobs}: "
+        f"{ran} obligations in {wall:.1f} s; "
+        f"per obligation (x{jobs} jobs) {per:.2f} s of wall clock, {solver / ran:.2f} s solving, "
+        f"{per - solver / ran:.2f} s the rest"
+    )
+
+
+def saved(models: list[str], root: Path) -> None:
+    names = models or sorted(p.parent.name for p in root.glob("*/results.json"))
     rows = []
     for name in names:
         data = json.loads((root / name / "results.json").read_text())
@@ -64,6 +132,23 @@ def main() -> None:
         "median asserts",
     ]
     print("\n".join(table(head, rows)))
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("models", nargs="*")
+    parser.add_argument("--proofs", default="proofs")
+    parser.add_argument("--startup", type=int, metavar="N", help="time N fresh obligation processes doing nothing")
+    parser.add_argument("--run", metavar="MODEL", help="time a fresh fatline prove MODEL (earlier results replayed)")
+    parser.add_argument("--jobs", type=int, default=1)
+    parser.add_argument("--lemma")
+    args = parser.parse_args()
+    if args.startup:
+        startup(args.startup)
+    elif args.run:
+        run(args.run, Path(args.proofs), args.jobs, args.lemma)
+    else:
+        saved(args.models, Path(args.proofs))
 
 
 if __name__ == "__main__":

@@ -2,8 +2,15 @@
 
 On a terminal: a tqdm bar with the stage, done/total, %, rate and ETA. Off a terminal (a pipe, a
 CI log): one plain line every few seconds (stage, counts, %, rate, ETA, memory), so a log shows a
-long run moving without drowning in carriage returns, and a short run prints nothing.
+long run moving without drowning in carriage returns, and a short run prints nothing (``first``:
+the seconds before the first line, for a command that should say at once what it is doing).
 ``enabled=False`` (``-q``) prints nothing.
+
+A stage may count nothing (``timer=True``: a compile, a set-up; it shows its elapsed seconds, not
+"0 states, 0/s"), or count units whose rate says nothing about what is left (``eta=False``: one
+obligation solves in a tenth of a second, the next in a minute; it shows the elapsed seconds). A
+``live`` note is computed whenever the stage is shown (the seconds spent on what is running now),
+and a terminal's bar is redrawn every second while one is set.
 """
 
 from __future__ import annotations
@@ -12,6 +19,7 @@ import resource
 import sys
 import threading
 import time
+from collections.abc import Callable
 from typing import Any, TextIO
 
 
@@ -31,11 +39,13 @@ class Progress:
         stream: TextIO | None = None,
         every: float = 5.0,
         tty: bool | None = None,
+        first: float | None = None,
     ) -> None:
         self.stream = stream or sys.stderr
         self.enabled = enabled
-        self.unit = unit
+        self.unit = self.stage_unit = unit
         self.every = every
+        self.first = every if first is None else first
         self.tty = self.stream.isatty() if tty is None else tty
         self.bar: Any = None
         self.label = ""
@@ -43,43 +53,79 @@ class Progress:
         self.done = 0
         self.total: int | None = None
         self.note = ""
+        self.eta = True
+        self.timer = False
+        self.live: Callable[[], str] | None = None
+        self._lock = threading.Lock()
         self._stop = threading.Event()
         self._ticker: threading.Thread | None = None
-        if enabled and not self.tty:
+        if enabled:
             self._ticker = threading.Thread(target=self._tick, name="fatline-progress", daemon=True)
             self._ticker.start()
 
     # --- the callbacks -----------------------------------------------------------------------------
-    def stage(self, label: str, total: int | None = None) -> None:
-        """Start a new stage (ends the previous one)."""
+    def stage(
+        self,
+        label: str,
+        total: int | None = None,
+        *,
+        eta: bool = True,
+        timer: bool = False,
+        live: Callable[[], str] | None = None,
+        unit: str | None = None,
+    ) -> None:
+        """Start a new stage (ends the previous one). ``timer``: it counts nothing, its elapsed time is
+        shown; ``eta=False``: no rate and no ETA (the elapsed time instead); ``live``: a note computed
+        whenever the stage is shown; ``unit``: this stage's unit (default: the bar's)."""
         if not self.enabled:
             return
-        if self.bar is not None:
-            self.bar.close()
-            self.bar = None
-        self.label, self.total, self.done, self.note = label, total, 0, ""
-        self.started = time.monotonic()
-        if self.tty:
-            from tqdm import tqdm
+        with self._lock:
+            if self.bar is not None:
+                self.bar.close()
+                self.bar = None
+            self.label, self.total, self.done, self.note = label, total, 0, ""
+            self.eta, self.timer, self.live = eta, timer, live
+            self.stage_unit = self.unit if unit is None else unit
+            self.started = time.monotonic()
+            if self.tty:
+                from tqdm import tqdm
 
-            self.bar = tqdm(total=total, desc=label, unit=self.unit, file=self.stream, leave=False, dynamic_ncols=True)
+                fmt = None
+                if timer:
+                    fmt = "{desc} [{elapsed}]"
+                elif not eta:
+                    fmt = (
+                        "{desc}: {n_fmt}"
+                        + ("/{total_fmt}" if total else "")
+                        + " "
+                        + self.stage_unit
+                        + " [{elapsed}]{postfix}"
+                    )
+                self.bar = tqdm(
+                    total=total, desc=label, unit=self.stage_unit, file=self.stream, leave=False, dynamic_ncols=True,
+                    bar_format=fmt,
+                )  # fmt: skip
+                if live is not None:
+                    self.bar.set_postfix_str(live(), refresh=True)
 
     def update(self, done: int, total: int | None = None, note: str = "") -> None:
         """``done`` of ``total`` units in the current stage; ``note`` is shown beside the counts."""
         if not self.enabled:
             return
-        self.done, self.note = done, note
-        if total is not None:
-            self.total = total
-        if self.bar is not None:
-            if total is not None and self.bar.total != total:
-                self.bar.total = total
-            if note:
-                self.bar.set_postfix_str(note, refresh=False)
-            if done > self.bar.n:
-                self.bar.update(done - self.bar.n)  # tqdm's own rate and ETA need real increments
-            else:
-                self.bar.refresh()
+        with self._lock:
+            self.done, self.note = done, note
+            if total is not None:
+                self.total = total
+            if self.bar is not None:
+                if total is not None and self.bar.total != total:
+                    self.bar.total = total
+                shown = self._note()
+                if shown:
+                    self.bar.set_postfix_str(shown, refresh=False)
+                if done > self.bar.n:
+                    self.bar.update(done - self.bar.n)  # tqdm's own rate and ETA need real increments
+                else:
+                    self.bar.refresh()
 
     def step(self, label: str) -> None:
         """One unit of the current stage done (``label`` names it)."""
@@ -90,9 +136,10 @@ class Progress:
         if self._ticker is not None:
             self._ticker.join(timeout=1)
             self._ticker = None
-        if self.bar is not None:
-            self.bar.close()
-            self.bar = None
+        with self._lock:
+            if self.bar is not None:
+                self.bar.close()
+                self.bar = None
 
     def __enter__(self) -> Progress:
         return self
@@ -101,20 +148,44 @@ class Progress:
         self.close()
 
     def _tick(self) -> None:
-        """Off a terminal: one line every ``every`` seconds while work goes on (a short run prints none)."""
-        while not self._stop.wait(self.every):
-            if self.label:
-                self._line(f"{self.label}: {self._counts()}" + (f", {self.note}" if self.note else ""))
+        """Off a terminal: a line after ``first`` seconds and then every ``every`` seconds while work
+        goes on (a short run prints none). On a terminal: the bar redrawn every second while its stage
+        has a live note or is a timer (tqdm redraws only on updates)."""
+        if self.tty:
+            while not self._stop.wait(1.0):
+                with self._lock:
+                    if self.bar is not None and (self.live is not None or self.timer):
+                        if self.live is not None:
+                            self.bar.set_postfix_str(self._note(), refresh=False)
+                        self.bar.refresh()
+            return
+        wait = self.first
+        while not self._stop.wait(wait):
+            wait = self.every
+            with self._lock:
+                if self.label:
+                    shown = self._note()
+                    self._line(f"{self.label}: {self._counts()}" + (f", {shown}" if shown else ""))
 
     # --- rendering ---------------------------------------------------------------------------------
+    def _note(self) -> str:
+        live = self.live() if self.live is not None else ""
+        return ", ".join(part for part in (self.note, live) if part)
+
     def _counts(self) -> str:
         elapsed = max(time.monotonic() - self.started, 1e-9)
+        memory = f", {peak_memory_mb():,.0f} MB"
+        if self.timer:
+            return f"{elapsed:,.0f} s" + memory
+        unit = self.stage_unit
         rate = self.done / elapsed
         text = f"{self.done:,}" + (f"/{self.total:,} ({100 * self.done / self.total:.0f}%)" if self.total else "")
-        text += f" {self.unit}".rstrip() + f", {rate:,.0f}/s" if self.unit else f", {elapsed:.0f} s"
+        if not self.eta:
+            return text + f" {unit}".rstrip() + f", {elapsed:,.0f} s" + memory
+        text += f" {unit}".rstrip() + f", {rate:,.0f}/s" if unit else f", {elapsed:.0f} s"
         if self.total and self.done and self.done < self.total:
             text += f", ETA {(self.total - self.done) / rate:,.0f} s"
-        return text + f", {peak_memory_mb():,.0f} MB"
+        return text + memory
 
     def _line(self, text: str) -> None:
         print(f"fatline: {text}", file=self.stream, flush=True)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import ast
 import inspect
 import itertools
+import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
@@ -443,6 +444,24 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
 
 
 PROVE_COLUMNS = ["lemma", "form", "case", "verdict", "robots", "seconds", "detail", "trace"]
+"""``fatline prove -v``: every field of a row (the default table: :data:`PROVE_SHORT_COLUMNS`)."""
+PROVE_SHORT_COLUMNS = ["obligation", "verdict", "seconds", "reason"]
+PROVE_ROBOTS_LEGEND = (
+    "robots = the robots an obligation names besides r: the witnesses of r's case and the robot the claim is "
+    "about (each obligation's header argues for every other robot of a swarm of any size); for the global form "
+    "of connectivity, its slots"
+)
+SHORT_REASON = 52
+"""Characters of a reason in the default ``fatline prove`` table (``-v`` and ``results.json``: all of it)."""
+SHORTER = (
+    (r"\bfrom an initial configuration of (\d+) robots\b", r"from \1 robots"),
+    (r"^unsat over the reals: holds for swarms of every size\b", "unsat: holds for every swarm size"),
+    (r"^the case never fires under these readings\b", "vacuous: the case never fires"),
+    (r"^an edge is lost and the graph splits\b", "the graph splits"),
+    (r"^r moves to \([^()]*\) and is not closer to the robot at \([^()]*\) in ", "r is not closer to the robot in "),
+    (r"^r moves to \([^()]*\): x decreases\b", "r's x decreases"),
+)
+"""The commonest reasons' words, shorter (the default table only)."""
 
 
 def prove_row(r: dict[str, Any], trace: str) -> list[str]:
@@ -452,20 +471,66 @@ def prove_row(r: dict[str, Any], trace: str) -> list[str]:
     return [r["lemma"], r["form"], case, r["verdict"], str(r["slots"]), f"{r['seconds']:.1f}", r["reason"], trace]
 
 
+def short_reason(reason: str, width: int = SHORT_REASON) -> str:
+    """A reason as one short cell: its parenthetical asides dropped (a group with a word in it; a point
+    such as ``(73/30, -1)`` stays), the commonest phrases shortened (:data:`SHORTER`), cut at a word
+    before ``width`` characters with an ellipsis."""
+    out: list[str] = []
+    depth, group = 0, ""
+    for ch in reason:
+        if depth:
+            group += ch
+            depth += {"(": 1, ")": -1}.get(ch, 0)
+            if not depth:
+                if not any(len(word) >= 3 and word.isalpha() for word in re.split(r"[^A-Za-z]+", group)):
+                    out.append(group)
+                group = ""
+        elif ch == "(":
+            depth, group = 1, ch
+        else:
+            out.append(ch)
+    out.append(group)  # an aside never closed stays
+    text = " ".join("".join(out).split()).replace(" ,", ",").replace(" :", ":").replace(" ;", ";")
+    for pattern, replacement in SHORTER:
+        text = re.sub(pattern, replacement, text)
+    if len(text) <= width:
+        return text
+    cut = text[: width - 1].rsplit(" ", 1)[0].rstrip(",;:")
+    return cut + "…"
+
+
+def prove_short_row(r: dict[str, Any]) -> list[str]:
+    """One ``results.json`` row as the default table shows it: obligation, verdict, seconds, a short reason."""
+    from .prove.tasks import row_key
+
+    return [row_key(r), r["verdict"], f"{r['seconds']:.1f}", short_reason(r["reason"])]
+
+
 def prove_counts(results: list[dict[str, Any]]) -> list[str]:
     """One line per lemma: how many obligations have each verdict."""
     lines = []
     for lemma in dict.fromkeys(r["lemma"] for r in results):
         mine = [r["verdict"] for r in results if r["lemma"] == lemma]
         counts = ", ".join(f"{mine.count(v)} {v}" for v in dict.fromkeys(sorted(mine)))
-        lines.append(f"{lemma}: {len(mine)} obligations: {counts}")
+        lines.append(f"{lemma}: {len(mine)} obligation{'s' if len(mine) != 1 else ''}: {counts}")
     return lines
 
 
-def prove_lines(model: Any, results: list[dict[str, Any]], out: Any) -> list[str]:
-    """The summary of ``fatline prove``: verdict counts per lemma, then one line per results row."""
-    rows = [prove_row(r, r.get("trace") or "") for r in results]
+def prove_lines(model: Any, results: list[dict[str, Any]], out: Any, *, verbose: bool = False) -> list[str]:
+    """The summary of ``fatline prove``: verdict counts per lemma, then one line per results row:
+    obligation, verdict, seconds and a short reason; ``verbose``: every field, the reason in full, the
+    trace, and what the ``robots`` column counts."""
     lines = [f"model {model.describe()}", "", *prove_counts(results), ""]
-    lines += table(PROVE_COLUMNS, rows)
+    if verbose:
+        lines += table(PROVE_COLUMNS, [prove_row(r, r.get("trace") or "") for r in results])
+        lines += ["", f"Columns: {PROVE_ROBOTS_LEGEND}."]
+    else:
+        lines += table(PROVE_SHORT_COLUMNS, [prove_short_row(r) for r in results])
+        traces = sorted({str(r["trace"]).rsplit("/", 1)[0] for r in results if r.get("trace")})
+        if traces:
+            lines += ["", f"counterexample traces in {', '.join(traces)} (fatline replay TRACE -v plays one)"]
+        else:
+            lines.append("")
+        lines.append("each reason in full, each trace and the robots a case names: fatline prove -v (or results.json)")
     lines += ["", f"obligations (SMT-LIB2, each with its any-size argument) and results.json in {out}"]
     return lines

@@ -36,3 +36,33 @@ def test_a_stopped_obligation_is_an_inconclusive_row_of_its_own_key(tmp_path):
             assert row.key == task.key and row.verdict is Verdict.INCONCLUSIVE
             assert "stopped after 185 s" in row.reason and f"is {hard_limit(60):.0f} s" in row.reason
             assert row.smt2.startswith(tmp_path.as_posix()) and row.smt2.endswith(".smt2")
+
+
+def _fresh_state() -> tuple[int, int, bool, bool]:
+    """What an obligation's process finds when its call starts: its pid and its parent's, whether z3
+    has a context yet and whether it is alone (one thread); then it uses z3, as an obligation does."""
+    import os
+    import threading
+
+    import z3
+
+    state = (os.getpid(), os.getppid(), z3.z3._main_ctx is None, threading.active_count() == 1)
+    x = z3.Real("x")
+    solver = z3.Solver()
+    solver.add(x * x == 2)
+    assert solver.check() == z3.sat
+    return state
+
+
+def test_each_call_runs_in_a_process_of_its_own_forked_from_one_server_with_no_z3_state():
+    """Every obligation runs in a process of its own, forked from a server that imported the prover
+    and nothing else (so the imports are paid once): the z3 context an earlier call made is not there."""
+    import os
+
+    got: dict[int, tuple[int, int, bool, bool]] = {}
+    run_fresh([(_fresh_state, (), {})] * 4, 1, got.__setitem__)
+    pids = {state[0] for state in got.values()}
+    parents = {state[1] for state in got.values()}
+    assert len(pids) == 4 and os.getpid() not in pids  # a process per call
+    assert len(parents) == 1 and os.getpid() not in parents  # forked by the one fork server, not spawned here
+    assert all(fresh and alone for _, _, fresh, alone in got.values()), got

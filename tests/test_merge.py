@@ -33,6 +33,7 @@ def _fake_prove(verdict: Verdict):
         traces=None,
         earlier=None,
         given=(),
+        on_start=None,
     ):
         tasks = prover.tasks_for(model, lemmas) if tasks is None else tasks
         results = []
@@ -72,8 +73,8 @@ def test_prove_one_lemma_keeps_the_other_lemmas_rows(tmp_path, monkeypatch, caps
             assert row == {"fingerprint": row["fingerprint"], **before[key]}  # kept as it was
     printed = capsys.readouterr().out.splitlines()
     own = len(prover.tasks_for(load_model("paper"), (Lemma.NO_COLLISION,)))
-    assert sum(line.startswith("no-collision ") for line in printed) == own  # the run's own rows only
-    assert not any(line.startswith("connectivity ") for line in printed)
+    assert sum(line.startswith("no-collision/") for line in printed) == own  # the run's own rows only
+    assert not any(line.startswith("connectivity/") for line in printed)
 
 
 def test_prove_redo_inconclusive_reruns_only_those_rows(tmp_path, monkeypatch):

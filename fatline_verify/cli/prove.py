@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import time
 from typing import Any
 
 from ..junit import claim_junit, prove_suites, write_junit
@@ -61,8 +62,19 @@ def cmd_prove(args: argparse.Namespace) -> int:
     claim_files(store.witness_paths(tasks), name="traces", kind=Kind.TRACE, force=args.force)
 
     interrupted = False
+    running: dict[str, float] = {}
+
+    def begun(key: str) -> None:
+        running[key] = time.monotonic()
+
+    def finished(key: str) -> None:
+        running.pop(key, None)
+        bar.step(key)
+
     with Progress(enabled=not args.quiet, unit="obligations") as bar:
-        bar.stage(f"{model.name}: proving", total=len(tasks))
+        # No rate or ETA: one obligation takes a tenth of a second, the next a minute; the seconds spent
+        # on each one running say whether the run is moving.
+        bar.stage(f"{model.name}: proving", total=len(tasks), eta=False, live=lambda: running_note(running))
         try:
             prove(
                 model,
@@ -72,16 +84,17 @@ def cmd_prove(args: argparse.Namespace) -> int:
                 jobs=args.jobs,
                 tasks=tasks,
                 on_result=store.add,
-                progress=bar.step,
+                progress=finished,
                 traces=traces_dir,
                 earlier=store.rows,
                 given=given,
+                on_start=begun,
             )
         except KeyboardInterrupt:
             interrupted = True
     keys = [task_key(t) for t in tasks if store.fresh(t) is not None]
     rows = store.ordered(keys)
-    lines = prove_lines(model, rows, out)
+    lines = prove_lines(model, rows, out, verbose=args.verbose)
     if interrupted:
         lines.append(f"INTERRUPTED: {len(rows)} of {len(tasks)} obligations finished and saved in {store.path}")
     emit(lines)  # the verdicts before the --json file: a full disk does not hide them
@@ -95,6 +108,15 @@ def cmd_prove(args: argparse.Namespace) -> int:
     if any(r["verdict"] == "VIOLATED" for r in rows):
         return EXIT_FOUND
     return EXIT_INCONCLUSIVE if any(r["verdict"] == "INCONCLUSIVE" for r in rows) else EXIT_OK
+
+
+def running_note(running: dict[str, float], shown: int = 2) -> str:
+    """The obligations running now, longest first, with the seconds each has taken so far."""
+    now = time.monotonic()
+    by_age = sorted(dict(running).items(), key=lambda item: item[1])
+    text = ", ".join(f"{key} for {now - t0:.0f} s" for key, t0 in by_age[:shown])
+    more = len(by_age) - shown
+    return ("running " + text + (f" and {more} more" if more > 0 else "")) if text else ""
 
 
 def register(sub: Any) -> None:
@@ -162,5 +184,12 @@ def register(sub: Any) -> None:
         "that decides the case and breaks the claim is VIOLATED, its source named",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="no progress")
+    p.add_argument(
+        "-v",
+        "--verbose",
+        action="store_true",
+        help="every field of each row: lemma, form, case, the robots its case names, the reason in full, the trace "
+        "(the default row: obligation, verdict, seconds, a short reason)",
+    )
     add_force(p)
     p.set_defaults(handler=cmd_prove)

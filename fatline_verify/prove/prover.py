@@ -173,6 +173,7 @@ def prove(
     traces: Path | None = None,
     earlier: Mapping[str, dict[str, Any]] | None = None,
     given: Sequence[Given] = (),
+    on_start: Callable[[str], None] | None = None,
 ) -> list[ProofResult]:
     """Every obligation of ``lemmas`` (or exactly ``tasks``) for ``model``; ``.smt2`` files under ``out``.
 
@@ -183,7 +184,8 @@ def prove(
     obligation's own is replayed before any search, so a counterexample once found stays found;
     ``earlier``: an earlier run's results rows by obligation key, whose replayed configurations (the
     claims without a trace: ``closer``, ``seen``, ``x-nondecreasing``) are replayed first likewise;
-    ``given``: configurations handed in (``--known``), replayed against every per-case obligation.
+    ``given``: configurations handed in (``--known``), replayed against every per-case obligation;
+    ``on_start(key)``: an obligation's process has started (``progress(key)``: it has finished).
     """
     tasks = tasks_for(model, lemmas) if tasks is None else tasks
     if not tasks:
@@ -216,7 +218,11 @@ def prove(
     def overrun(k: int, seconds: float) -> ProofResult:
         return overrun_result(tasks[k], seconds, timeout, out)
 
-    run_fresh(calls, workers, done, limit=hard_limit(timeout), overrun=overrun)
+    def start(k: int) -> None:
+        if on_start:
+            on_start(task_key(tasks[k]))
+
+    run_fresh(calls, workers, done, limit=hard_limit(timeout), overrun=overrun, on_start=start)
     return [r for r in results if r is not None]
 
 
