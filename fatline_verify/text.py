@@ -22,6 +22,7 @@ from .lemmas.properties import Lemma
 from .model.config import Model
 from .model.numbers import Point, format_number, parse_number
 from .model.options import CATALOGUE, Options
+from .rules import registry
 from .rules.paper.algorithm import Decision, Rule
 from .schedulers.round import decide_all
 from .trace.traces import trace_model
@@ -212,8 +213,9 @@ def stay_lines(state: Sequence[Point], model: Model) -> list[str]:
         lines.append(f"r{i}: {status}{rule_label(d.rule)} ({_seen(i, d, state, model)})")
         if d.rule not in used:
             used.append(d.rule)
+    own = registry.of(model).labels
     for rule in used:
-        quote = rule_quote(rule)
+        quote = rule_quote(rule) if isinstance(rule, Rule) else own.get(str(rule), "")
         if quote:
             lines.append(f"{rule_label(rule)}: {quote}")
     return lines

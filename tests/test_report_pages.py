@@ -227,7 +227,10 @@ def test_the_shipped_cards_are_each_models_own(shipped):
     cards = _cards(cross_model_html(shipped))
     assert list(cards) == [r.model.name for r in shipped]
     for (report, trace, _), (name, card) in zip(featured(shipped), cards.items(), strict=True):
-        assert report.model.name == name and trace is not None
+        assert report.model.name == name
+        if trace is None:  # a model with no counterexample at all (the certified rule set): no frames
+            assert not report.traces and "data-frames" not in card
+            continue
         assert trace in report.traces
         frames_ = json.loads(re.search(r'data-frames="([^"]*)"', card)[1].replace("&quot;", '"'))
         assert frames_ and all(f.startswith(f"{name}/img/{name}-") for f in frames_)

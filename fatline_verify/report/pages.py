@@ -15,6 +15,7 @@ from collections.abc import Callable
 from typing import Any
 
 from ..lemmas.properties import CHECKED, Lemma
+from ..model.config import IMPLIED
 from ..model.options import CATALOGUE
 from ..schedulers.systems import system_for
 from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, prove_row, violation_line
@@ -99,15 +100,23 @@ def _prover_summary(rows: list[dict[str, Any]], lemma: str) -> str:
     return ", ".join(f"{n} {v}" for v, n in _prover_counts(rows, lemma))
 
 
+def _own_rules(report: ModelReport) -> str | None:
+    """``rules=NAME`` for a model of a rule set other than the paper's (which reads none of its readings)."""
+    return None if report.model.rules in IMPLIED else f"rules={report.model.rules}"
+
+
 def _readings(report: ModelReport) -> str:
     diff = report.model.options.differences()
-    return ", ".join(f"{k}={v}" for k, v in diff.items()) or "every default reading"
+    return ", ".join(f"{k}={v}" for k, v in diff.items()) or _own_rules(report) or "every default reading"
 
 
 def _readings_html(report: ModelReport, root: str, sep: str = ", ") -> str:
     """The model's readings, each linked to its entry in the catalogue, its meaning on hover."""
     docs = html.escape(root + DOCS_LINK)
     diff = report.model.options.differences()
+    own = _own_rules(report)
+    if not diff and own:
+        return f"<code>{html.escape(own)}</code>"
     if not diff:
         return f'<a href="{docs}">every default reading</a>'
     return sep.join(

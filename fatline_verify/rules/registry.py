@@ -59,6 +59,8 @@ class RuleSet:
     leg obligations of the repaired rules); ``None``: ``fatline prove`` refuses the rule set."""
     bands: bool = False
     """Whether pictures shade the acting robot's bands A ... I (the paper's sets)."""
+    labels: dict[str, str] = field(default_factory=dict, repr=False, compare=False)
+    """What each rule label its decision function returns means (shown beside a deadlock's rules)."""
 
     def accepts(self, option: str) -> bool:
         """Whether a model of this rule set may set ``option``."""
