@@ -22,9 +22,10 @@ more than two radii below it, ending two radii above it); ``contract-down`` (tow
 on its vertical, to a gap of ``DOWN_GAP`` radii, unless a robot left of it waits between the two);
 ``contract-up`` (only a robot that sees nothing but its own vertical: up toward the robot above it,
 to a gap of ``UP_GAP`` radii, the gap below staying at most ``DOWN_GAP``; it *parks* under the robot
-above, so that robot can tell it will not cross its way); ``make-room`` (one lattice unit down, when a
-robot left of it, at or above its height, is in its way or it is pressed by a robot resting on it,
-and no robot left of it waits lower).
+above, so that robot can tell it will not cross its way); ``make-room`` (one lattice unit down, when it
+sees a robot left of it at or above its height that would meet it on a step right or diagonally right,
+or that it sees while it carries a robot resting on it from above; never while a robot left of it
+waits lower).
 
 Who may move, and what it must check (safety)
 ---------------------------------------------
@@ -49,8 +50,8 @@ robot will do: every test below is a necessary condition of that robot's own rul
 Two movers that do not see each other are more than ``rad_v`` apart; each moves at most one radius
 along an axis or one lattice unit along each: on the lattice q = 1 no two such moves come closer than
 2 (checked exhaustively in ``tests/test_certified.py``), and for q >= 2 every move is at most one
-radius long. So no collision and no lost connectivity, at any swarm size, rests on what the prover
-will have to discharge (below).
+radius long. No collision and no lost connectivity at any swarm size then rest on the obligations the
+prover will have to discharge (``docs/certified.md``, "What is left for the prover").
 
 The measure (for the prover)
 ----------------------------
@@ -58,19 +59,21 @@ The measure (for the prover)
 it) and ``B = sum_i y_i``. ``right``, ``up-right`` and ``down-right`` lower A by at least 1 and no move
 raises it (no move goes left); every ``down`` leaves A and lowers B by at least 1. So ``(A, B)``
 decreases lexicographically on every round in which some robot moves, except by ``contract-up``,
-which raises B: it is made only by a robot that sees nothing but its own vertical, closes a gap above
-it that is more than ``UP_GAP`` radii, and a fall never makes a robot see its own vertical only.
+which raises B: it is made only by a robot that sees nothing but its own vertical, closing a gap above it
+of more than ``UP_GAP`` radii; a fall never leaves the faller seeing (at their places before the round)
+nothing but its own vertical.
 A is bounded (``0 <= A <= n (n - 1) rad_v q``: the swarm is connected and one robot is on the RMA).
 Left to prove: that B is bounded below on every execution (no endless fall of the whole swarm) and
 that parkings do not alternate with falls forever; within the checker's bounds neither happens (no
 execution leaves a 20x20 bound, no fair cycle).
 
 What the checker finds (SSYNC, FSYNC and centralized alike; 9x9 window, 20x20 bound)
------------------------------------------------------------------------------------
+------------------------------------------------------------------------------------
 Every lemma holds for 2 to 4 robots at q = 1 and 2 to 3 at q = 2. Liveness fails at 5 robots, q = 1
 (5 reachable deadlocks, none initial) and 4 robots, q = 2 (2 reachable deadlocks, none initial):
 each is a robot held by a move another robot could make as far as it can see, but cannot make for a
-reason it cannot see (a robot out of its view) -- the README, "A live rule set?", lists them.
+reason it cannot see (a robot out of its view). ``docs/certified.md`` lists them, with the figures.
+Under ASYNC it collides (2 robots, 8 events: a stale snapshot of a contracting vertical).
 """
 
 from __future__ import annotations
