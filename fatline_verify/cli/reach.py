@@ -26,6 +26,8 @@ from .common import (
 MAX_Q = 8
 """The search is in Python and every state of every initial configuration is kept: finer lattices
 than this are out of reach of one machine at the robot counts that matter."""
+DEFAULT_MODEL = "repaired"
+"""The family's legs are the repaired rule set's (the paper's rules have no repairs: ``reach paper`` is refused)."""
 SHOWN = 10
 """Stuck configurations listed per robot count (``--json`` has them all)."""
 
@@ -102,7 +104,7 @@ def register(sub: Any) -> None:
         "reach",
         "whether any rule set whose moves are the repaired family's legs could bring each small swarm to a line",
     )
-    add_model_argument(p)
+    add_model_argument(p, default=DEFAULT_MODEL)
     add_bounds(p)
     p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")
     p.add_argument(
