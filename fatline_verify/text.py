@@ -39,6 +39,11 @@ SHORT_FRACTION = 15
 # --- numbers for display -------------------------------------------------------------------------
 
 
+def plural(count: int, word: str, words: str | None = None) -> str:
+    """``1 round``, ``0 rounds``, ``1,024 states`` (``words``: an irregular plural)."""
+    return f"{count:,} {word if count == 1 else (words or word + 's')}"
+
+
 def exact_value(value: object) -> Fraction:
     """A number of a trace document (``int``, ``"p/q"``) or of the engine, exactly."""
     if isinstance(value, Fraction | int):
@@ -412,7 +417,7 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
     for lemma in dict.fromkeys(x.lemma for x in result.results):  # the paper's, then registered ones
         for r in (x for x in result.results if x.lemma is lemma):
             trace = trace_paths.get((lemma.value, r.robots), "")
-            witness = "" if r.witness_rounds is None else f"{r.witness_rounds} {word}s"
+            witness = "" if r.witness_rounds is None else plural(r.witness_rounds, word)
             rows.append([lemma.value, str(r.robots), r.verdict.value, witness, r.reason, trace])
     lines += table(["lemma", "robots", "verdict", "witness", "detail", "trace"], rows)
     lines.append("")
@@ -433,8 +438,9 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
     lines += [
         f"Columns: initial = initial configurations up to translation; escaped = successors outside the {outside} "
         f"(not explored);{off} violating-only = violating {word}s into a state no other {word} reaches "
-        f"(counted per {word}, not per state; not explored); witness = {word}s "
-        "in the shortest witness (replayed before it is reported).",
+        f"(counted per {word}, not per state; not explored); truncated = the search stopped at --max-states or "
+        "--max-memory before it expanded every state (a lemma it found no violation of is then INCONCLUSIVE); "
+        f"witness = {word}s in the shortest witness (replayed before it is reported).",
         f"A lemma that holds, holds for these robot counts and this {scope} only. "
         + {
             "VIOLATED": "Exit code 1: violations were found.",

@@ -112,3 +112,65 @@ def test_the_pages_fit_a_1400_px_window(browser, tmp_path, committed_reports):
     shot = tmp_path / "matrix-1400.png"
     browser.save_screenshot(str(shot))
     assert shot.stat().st_size > 10_000
+
+
+BROKEN_WORDS = """
+var broken = [];
+document.querySelectorAll(arguments[0]).forEach(function (cell) {
+  var walker = document.createTreeWalker(cell, NodeFilter.SHOW_TEXT);
+  for (var node = walker.nextNode(); node; node = walker.nextNode()) {
+    var re = /[^\\s\\u00a0]+/g, m;
+    while ((m = re.exec(node.data)) !== null) {
+      var range = document.createRange();
+      range.setStart(node, m.index);
+      range.setEnd(node, m.index + m[0].length);
+      if (range.getClientRects().length > 1) { broken.push(m[0]); }
+    }
+  }
+});
+return broken;
+"""
+"""The words of the cells ``arguments[0]`` selects that a line break cuts in two (a word spans two boxes)."""
+
+
+def test_no_verdict_lemma_or_number_is_broken_across_lines_at_1400_px(browser, tmp_path, committed_reports):
+    """The prover's table and the matrix at 1400 px: "VIOLATED", "connectivity", a model's or a case's
+    name, a count each stay on one line (a case's name may break after a dot; HOLDS_WITHIN_BOUNDS at its
+    underscores, which are separate text around <wbr>; a reading such as band_overlap=vertical-first in
+    the matrix's narrow readings column, at its hyphens)."""
+    out = _render_fresh(tmp_path, committed_reports)
+    browser.set_window_size(1400, 1000)
+    for page in [out / "index.html", *sorted(out.glob("*/index.html"))]:
+        browser.get(page.as_uri())
+        cells = (
+            "td.nw, table:not(.matrix) td.VIOLATED, table:not(.matrix) td.PROVED, .matrix td:not(.readings), .matrix th"
+        )
+        broken = browser.execute_script(BROKEN_WORDS, cells)
+        assert not broken, (page.relative_to(out), broken[:10])
+    browser.get((out / "paper" / "index.html").as_uri())
+    assert (
+        browser.execute_script(BROKEN_WORDS, "td.nw") == []
+        and browser.execute_script("return document.querySelectorAll('td.nw').length") > 100
+    )
+
+
+def test_a_model_page_opens_with_an_index_of_its_counterexamples(browser, tmp_path, committed_reports):
+    """The first counterexample is a click away: the index is above the first table, each link lands on
+    its viewer."""
+    from selenium.webdriver.common.by import By
+
+    out = _render_fresh(tmp_path, committed_reports)
+    browser.set_window_size(1400, 1000)
+    browser.get((out / "paper" / "index.html").as_uri())
+    index_top, table_top = browser.execute_script(
+        "return [document.querySelector('ul.index').getBoundingClientRect().top,"
+        " document.querySelector('table').getBoundingClientRect().top]"
+    )
+    assert index_top < table_top < 1000  # on the first screen
+    links = browser.find_elements(By.CSS_SELECTOR, "ul.index a")
+    viewers = browser.find_elements(By.CSS_SELECTOR, ".viewer")
+    assert len(links) == len(viewers) > 10
+    links[0].click()
+    target = links[0].get_attribute("href").split("#", 1)[1]
+    top = browser.execute_script(f"return document.getElementById('{target}').getBoundingClientRect().top")
+    assert abs(top) < 5  # scrolled to that viewer

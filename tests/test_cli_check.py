@@ -37,6 +37,32 @@ def test_check_default_model_writes_replayable_traces_and_json(capsys, tmp_path)
     assert out.count("reproduces") == len(written)
 
 
+def test_check_says_one_round_and_what_truncated_means(capsys, tmp_path):
+    code, out, _ = run_cli(capsys, "check", "--robots", "2", "--window", "7x7", "--traces", str(tmp_path), "-q")
+    assert code == 1
+    row = next(line for line in out.splitlines() if line.startswith("connectivity "))
+    assert " 1 round " in row and "1 rounds" not in out
+    assert "truncated = the search stopped at --max-states or --max-memory" in out
+
+
+def test_a_first_run_says_it_is_compiling_the_kernels_not_0_states(monkeypatch):
+    """While numba compiles (a first run), the stage says so; a warm run goes straight to the search."""
+    from fatline_verify.check import checker
+    from fatline_verify.model.config import load_model
+
+    plan = checker.CheckPlan.of(load_model("paper"), (2, 2), (7, 7))
+    seen: list[tuple[str, int, int]] = []
+    checker.explore_robots(plan, 2, None, lambda label, done, total, note: seen.append((label, done, total)))
+    assert checker.kernels_cached(plan.engine)  # they are now, whatever they were before
+    assert seen[0] == ("n=2: enumerating initial configurations in 7x7", 0, 0)
+    monkeypatch.setattr(checker, "kernels_cached", lambda engine: False)
+    seen.clear()
+    checker.explore_robots(plan, 2, None, lambda label, done, total, note: seen.append((label, done, total)))
+    assert seen[0] == ("n=2: compiling kernels, first run only", 0, 0)
+    assert not any("initial configurations" in label for label, _, _ in seen)  # the compile stage stands
+    assert seen[1][0].startswith("n=2: level ")
+
+
 def test_check_exit_0_when_everything_holds(capsys, tmp_path):
     # One robot: alone, already a line.
     code, out, _ = run_cli(capsys, "check", "--robots", "1", "--window", "3x3", "--traces", str(tmp_path), "-q")

@@ -165,6 +165,17 @@ def test_cli_reports_stuck_configurations_and_writes_json(tmp_path, capsys):
     assert "deadlock" in capsys.readouterr().out
 
 
+def test_cli_without_a_model_reaches_with_the_repaired_one(capsys):
+    """The family is the repaired rule set's legs: with no model named, reach uses ``repaired`` (the
+    default of the other commands, ``paper``, has no repairs and is refused)."""
+    code = main(["reach", "--robots", "2", "-q"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    assert out.startswith("model repaired:")
+    assert main(["reach", "--help"]) == 0
+    assert "(default: repaired)" in " ".join(capsys.readouterr().out.split())
+
+
 def test_cli_with_left_legs_reaches_every_line_and_replays(capsys):
     code = main(["reach", "repaired", "--q", "2", "--robots", "3", "--with", "left", "--verify", "-q"])
     text = capsys.readouterr().out

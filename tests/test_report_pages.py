@@ -19,7 +19,15 @@ from fatline_verify.docs import main as docs_main
 from fatline_verify.model.config import Model
 from fatline_verify.model.options import CATALOGUE
 from fatline_verify.report.data import ModelReport
-from fatline_verify.report.pages import cross_model_html, cross_model_markdown, featured, html_numbers, viewer
+from fatline_verify.report.pages import (
+    cross_model_html,
+    cross_model_markdown,
+    featured,
+    html_numbers,
+    model_html,
+    model_markdown,
+    viewer,
+)
 from fatline_verify.report.pictures import frame_svg, frames
 from fatline_verify.schedulers.round import play_round
 from fatline_verify.text import (
@@ -247,6 +255,37 @@ def test_the_matrix_page_links_the_readings_and_wraps_verdicts(shipped):
     assert f'href="../{READINGS_DOC}#goal"' in matrix
     assert not LONG_DIGITS.search(re.sub(r'title="[^"]*"', "", page))
     assert f"]({f'../{READINGS_DOC}'})" in cross_model_markdown(shipped)
+
+
+def test_the_matrix_says_why_a_model_has_no_prover_cells(shipped):
+    page = cross_model_html(shipped)
+    row = page.split('href="paper-async/index.html"', 1)[1].split("</tr>", 1)[0]
+    assert '<td class="notrun" colspan="4"' in row
+    assert "not run: the prover encodes round schedulers only" in row
+    markdown = cross_model_markdown(shipped)
+    assert "paper-async: no prover cells, not run: the prover encodes round schedulers only" in markdown
+    others = page.split('href="paper/index.html"', 1)[1].split("</tr>", 1)[0]
+    assert "notrun" not in others  # a model the prover runs has its four cells
+
+
+def test_a_model_page_opens_with_an_index_that_links_every_counterexample(shipped):
+    report = next(r for r in shipped if r.model.name == "paper")
+    html_page = model_html(report)
+    index = html_page.split('<ul class="index">', 1)[1].split("</ul>", 1)[0]
+    assert html_page.index('<ul class="index">') < html_page.index("<table")  # above the first table
+    targets = re.findall(r'href="#([^"]+)"', index)
+    assert sorted(targets) == sorted(t["name"] for t in report.traces)
+    for name in targets:
+        assert f'<div class="viewer" id="{name}"' in html_page
+    markdown = model_markdown(report)
+    assert markdown.index(f"Counterexamples ({len(report.traces)}, pictures below):") < markdown.index("| robots |")
+    for t in report.traces:  # each link is the anchor a Markdown renderer gives the trace's heading
+        heading = f"### {t['name']}"
+        anchor = re.sub(r"[^a-z0-9 _-]", "", t["name"].lower())
+        assert heading in markdown and f"(#{anchor})" in markdown
+    assert "truncated = the search stopped at its state or memory bound" in markdown
+    assert "robots = the robots an obligation names besides r" in markdown
+    assert "| 1 round |" in markdown and "| 1 rounds |" not in markdown
 
 
 # --- the readings catalogue ------------------------------------------------------------------------

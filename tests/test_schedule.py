@@ -247,7 +247,7 @@ def test_counterexample_that_stays_reproduces_under_another_model(capsys):
     trace = CORPUS / "paper-check-connectivity-n2.json"
     code, out, _ = run_cli(capsys, "replay", str(trace), "--model", "paper-drop-touch")
     assert code == 0
-    assert "reproduces under paper-drop-touch: 1 rounds, violation (connectivity in round 1)" in out
+    assert "reproduces under paper-drop-touch: 1 round, violation (connectivity in round 1)" in out
 
 
 @pytest.mark.parametrize("model", [None, "paper"])

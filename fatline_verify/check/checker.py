@@ -325,6 +325,27 @@ def check_robots(
     return stats, results
 
 
+def kernels_cached(engine: str) -> bool:
+    """Whether the numba kernels a search with ``engine`` runs are compiled in this process or cached
+    on disk for this source (so no compile comes first); ``True`` where numba cannot tell."""
+    from . import compiled, hashtable, initial
+
+    modules = [initial, hashtable, compiled] if engine == "compiled" else [initial]
+    try:
+        for module in modules:
+            for value in vars(module).values():
+                cache = getattr(value, "_cache", None)
+                if not hasattr(value, "signatures") or cache is None or value.signatures:
+                    continue
+                if getattr(value, "targetoptions", {}).get("inline") == "always":
+                    continue  # compiled into its callers only
+                if not cache._cache_file._load_index():
+                    return False
+    except Exception:  # numba's cache layout is not an API: no message rather than a wrong one
+        return True
+    return True
+
+
 def explore_robots(
     plan: CheckPlan, n: int, cluster: Cluster | None = None, progress: ProgressFn | None = None
 ) -> Exploration:
@@ -333,10 +354,14 @@ def explore_robots(
     bound = plan.bound or window
     system = system_for(model)
     codec = system.codec(n, bound)
+    compiling = progress is not None and not kernels_cached(plan.engine)
     if progress:
-        progress(f"n={n}: enumerating initial configurations in {window[0]}x{window[1]}", 0, 0, "")
+        # A first run compiles the numba kernels (seconds to a minute, once: they are cached); a stage
+        # that says so stands until the first level's first batch, which the compile precedes.
+        what = "compiling kernels, first run only" if compiling else "enumerating initial configurations in"
+        progress(f"n={n}: {what} {window[0]}x{window[1]}" if not compiling else f"n={n}: {what}", 0, 0, "")
     initial = initial_keys_for(system, n, window, codec)
-    if progress:
+    if progress and not compiling:
         progress(f"n={n}: {len(initial):,} initial configurations", len(initial), len(initial), "")
     if not len(initial):
         raise InvalidInput(

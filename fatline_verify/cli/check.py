@@ -40,7 +40,7 @@ def stage_callback(bar: Progress) -> Any:
 
     def tick(label: str, done: int, total: int, note: str) -> None:
         if label != bar.label:
-            bar.stage(label)
+            bar.stage(label, timer=not total and not done)  # a stage that counts nothing shows its seconds
         if total:
             bar.update(done, total, note)
 

@@ -114,8 +114,8 @@ def add_command(sub: Any, name: str, help_text: str) -> Parser:
     return sub.add_parser(name, help=help_text, description=help_text)  # type: ignore[no-any-return]
 
 
-def add_model_argument(p: argparse.ArgumentParser) -> None:
-    p.add_argument("model", nargs="?", default="paper", help="model file or shipped model name (default: paper)")
+def add_model_argument(p: argparse.ArgumentParser, default: str = "paper") -> None:
+    p.add_argument("model", nargs="?", default=default, help=f"model file or shipped model name (default: {default})")
 
 
 def add_bounds(p: argparse.ArgumentParser) -> None:

@@ -29,6 +29,9 @@ than this are out of reach of one machine at the robot counts that matter."""
 BYTES_PER_START = 2048
 """Memory the search holds per initial configuration (Python states, their successors and distances:
 about 1.5 KB measured at 5 robots in 9x9), for the guard before any work."""
+
+DEFAULT_MODEL = "repaired"
+"""The family's legs are the repaired rule set's (the paper's rules have no repairs: ``reach paper`` is refused)."""
 SHOWN = 10
 """Stuck configurations listed per robot count (``--json`` has them all)."""
 
@@ -107,7 +110,7 @@ def register(sub: Any) -> None:
         "reach",
         "whether any rule set whose moves are the repaired family's legs could bring each small swarm to a line",
     )
-    add_model_argument(p)
+    add_model_argument(p, default=DEFAULT_MODEL)
     add_bounds(p)
     p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")
     p.add_argument(

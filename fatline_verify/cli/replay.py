@@ -17,7 +17,7 @@ from typing import Any
 from ..errors import FatlineError
 from ..model.config import Model
 from ..outputs import Kind, claim_dir, claim_files, write_text
-from ..text import trace_lines
+from ..text import plural, trace_lines
 from ..trace.simulate import Run
 from ..trace.traces import differences, load_trace, replay, run_to_json, trace_model
 from .common import EXIT_BAD, EXIT_FOUND, EXIT_OK, add_command, add_force, emit, error_line, model_arg
@@ -99,7 +99,7 @@ def cmd_replay(args: argparse.Namespace) -> int:
         word = _word(doc)
         what = f"{doc['outcome']}" + (f" ({v['property']} in {word} {v['round']})" if v else "")
         under = f" under {override.name}" if override is not None else ""
-        lines = [f"{name}: reproduces{under}: {len(run.rounds)} {word}s, {what}"]
+        lines = [f"{name}: reproduces{under}: {plural(len(run.rounds), word)}, {what}"]
         if args.verbose:
             lines += ["  " + line for line in trace_lines(doc, override)]
         if picture is not None:

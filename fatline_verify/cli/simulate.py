@@ -10,7 +10,7 @@ from ..errors import InvalidInput
 from ..model.options import Scheduler
 from ..outputs import Kind, claim_file
 from ..schedulers.systems import system_for
-from ..text import trace_lines
+from ..text import plural, trace_lines
 from ..trace.simulate import Outcome, parse_schedule, play_schedule, simulate
 from ..trace.traces import run_to_json, write_trace
 from .common import (
@@ -67,7 +67,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         max_rounds = DEFAULT_ROUNDS if args.rounds is None else args.rounds
         run = simulate(initial, model, seed=seed, max_rounds=max_rounds)
         origin = {"tool": "fatline simulate", "scheduler": str(scheduler), "seed": seed}
-        lines.append(f"scheduler {scheduler}, seed {seed}, at most {max_rounds} {word}s")
+        lines.append(f"scheduler {scheduler}, seed {seed}, at most {plural(max_rounds, word)}")
     doc = run_to_json(run, origin)
     lines += trace_lines(doc)
     if args.schedule is not None and len(run.rounds) < len(rounds):

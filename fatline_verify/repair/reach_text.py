@@ -7,6 +7,7 @@ from typing import Any
 from ..model.config import Model, model_to_mapping
 from ..model.numbers import format_number
 from ..outputs import Kind as OutputKind
+from ..text import plural
 from .reach import PROVED, Kind, ReachResult, State, alone
 
 
@@ -72,8 +73,8 @@ def reach_lines(
         ]
         for r in stuck:
             more = f" (first {shown}; --json lists all)" if len(r.stuck) > shown else ""
-            plural = "s" if len(r.stuck) != 1 else ""
-            lines.append(f"  {r.n} robots, {len(r.stuck):,} configuration{plural}{more}:")
+            configurations = plural(len(r.stuck), "configuration")
+            lines.append(f"  {r.n} robots, {configurations}{more}:")
             lines += [f"    {_simulate(model, ref, s)}" for s in r.stuck[:shown]]
     else:
         lines += ["", "every initial configuration reaches a line by some rounds of these legs"]
@@ -115,10 +116,10 @@ def reach_lines(
         )
     replayed = [r.replayed for r in results if r.replayed is not None]
     if replayed:
+        rounds = plural(sum(replayed), "round")
         lines.append(
             f"a shortest way to a line from every other configuration was replayed by fatline_verify.schedulers.round."
-            f"play_round ({sum(replayed):,} rounds: every leg one of the mover's, no collision, the graph connected, "
-            "the RMA kept)"
+            f"play_round ({rounds}: every leg one of the mover's, no collision, the graph connected, the RMA kept)"
         )
     lines.append(
         "Bounds: the initial configurations of the window; the rounds are not bounded (the legs keep the swarm "

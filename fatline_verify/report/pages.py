@@ -16,9 +16,18 @@ from typing import Any
 
 from ..lemmas.properties import CHECKED, Lemma
 from ..model.config import IMPLIED
-from ..model.options import CATALOGUE
+from ..model.options import CATALOGUE, Scheduler
 from ..schedulers.systems import system_for
-from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, prove_row, violation_line
+from ..text import (
+    PROVE_ROBOTS_LEGEND,
+    READINGS_DOC,
+    SHORT,
+    NumberStyle,
+    exact_text,
+    plural,
+    prove_row,
+    violation_line,
+)
 from .against_pages import against_html, against_markdown
 from .data import ModelReport
 
@@ -50,7 +59,12 @@ body { font-family: system-ui, sans-serif; max-width: 1100px; margin: 2em auto; 
 body.wide { max-width: 1340px; }
 table { border-collapse: collapse; margin: 1em 0; font-size: 0.9em; }
 th, td { border: 1px solid #ccc; padding: 0.3em 0.6em; text-align: left; vertical-align: top; }
-td { overflow-wrap: anywhere; }
+td { overflow-wrap: break-word; }
+td.detail { overflow-wrap: anywhere; min-width: 22em; }
+td.nw { white-space: nowrap; }
+table:not(.matrix) td:is(.VIOLATED, .HOLDS_WITHIN_BOUNDS, .PROVED, .INCONCLUSIVE) { white-space: nowrap; }
+p.legend { font-size: 0.85em; color: #444; }
+.index { line-height: 1.6; } .index a { white-space: nowrap; }
 th { background: #f3f3f3; }
 .VIOLATED { background: #fde0e0; } .HOLDS_WITHIN_BOUNDS { background: #e3f4e3; }
 .PROVED { background: #c8ecc8; } .INCONCLUSIVE { background: #fff4d6; }
@@ -58,6 +72,8 @@ table.matrix { width: 100%; font-size: 0.8em; }
 .matrix th { font-weight: 600; }
 .matrix th, .matrix td { padding: 0.3em 0.35em; }
 .matrix th.group { text-align: center; }
+.matrix td.notrun { color: #555; font-style: italic; text-align: center; }
+.matrix td.model { white-space: nowrap; }
 .matrix td.readings { min-width: 10em; max-width: 14em; }
 .matrix td.readings code { font-size: 0.95em; }
 .matrix .robots { color: #555; white-space: nowrap; }
@@ -171,7 +187,7 @@ def _check_rows(report: ModelReport) -> list[list[str]]:
             r["lemma"],
             str(r["robots"]),
             r["verdict"],
-            "" if r["witness_rounds"] is None else f"{r['witness_rounds']} {word}s",
+            "" if r["witness_rounds"] is None else plural(r["witness_rounds"], word),
             r["reason"],
             f"[trace](../traces/{r['trace'].split('/')[-1]})" if r.get("trace") else "",
         ]
@@ -239,6 +255,61 @@ SEARCH_HEAD = [
 ]
 CHECK_HEAD = ["lemma", "robots", "verdict", "witness", "detail", "trace"]
 PROVE_HEAD = ["lemma", "form", "case", "verdict", "robots", "seconds", "detail", "trace"]
+NOWRAP = ("lemma", "form", "case", "robots", "witness", "seconds", "trace", "states", "transitions", "escaped")
+"""Columns whose cells never wrap (a lemma's name, a number, a link; a case's name only after a dot): a
+word is never broken."""
+
+
+def _search_legend(report: ModelReport) -> str:
+    """What the search table's columns count."""
+    word = _word(report)
+    off = "off-lattice = successors between points of the finer lattice (counted in escaped); " if _fine(report) else ""
+    return (
+        "Columns: initial configurations up to translation; escaped = successors outside the window (not explored); "
+        f"{off}violating-only = violating {word}s into a state no other {word} reaches (not explored); truncated = the "
+        "search stopped at its state or memory bound before it expanded every state (a lemma it found no violation of "
+        f"is then INCONCLUSIVE); witness = {word}s in the shortest witness."
+    )
+
+
+PROVE_LEGEND = f"Columns: {PROVE_ROBOTS_LEGEND}; seconds = the solver's."
+
+
+def _index_groups(report: ModelReport) -> list[tuple[str, list[tuple[str, str]]]]:
+    """The counterexamples by source and lemma, in page order: per group, (anchor name, link text)."""
+    groups: dict[str, list[tuple[str, str]]] = {}
+    for t in report.traces:
+        prefix = f"{report.model.name}-{t['source']}-{t['lemma']}-"
+        short = t["name"].removeprefix(prefix) if t["name"].startswith(prefix) else t["name"]
+        groups.setdefault(f"{t['source']}, {t['lemma']}", []).append((t["name"], short))
+    return list(groups.items())
+
+
+def _md_anchor(title: str) -> str:
+    """The anchor a Markdown renderer (GitHub's) gives a heading: lower case, punctuation dropped."""
+    return re.sub(r"[^a-z0-9 _-]", "", title.lower()).replace(" ", "-")
+
+
+def _index_markdown(report: ModelReport) -> list[str]:
+    if not report.traces:
+        return []
+    lines = [f"Counterexamples ({len(report.traces)}, pictures below):", ""]
+    for group, items in _index_groups(report):
+        links = " · ".join(f"[{text}](#{_md_anchor(name)})" for name, text in items)
+        lines.append(f"- {group}: {links}")
+    return [*lines, ""]
+
+
+def _index_html(report: ModelReport) -> str:
+    if not report.traces:
+        return ""
+    rows = "".join(
+        f"<li>{html.escape(group)}: "
+        + " · ".join(f'<a href="#{html.escape(name)}">{html.escape(text)}</a>' for name, text in items)
+        + "</li>"
+        for group, items in _index_groups(report)
+    )
+    return f'<p>Counterexamples ({len(report.traces)}, pictures below):</p><ul class="index">{rows}</ul>'
 
 
 def _trace_text(t: dict[str, Any], style: NumberStyle = SHORT) -> str:
@@ -259,6 +330,7 @@ def model_markdown(report: ModelReport) -> str:
         f"Regenerate: `fatline report models/{m.name}.toml` (reuses the cached results while they are up to date; "
         "`--refresh` recomputes). [HTML version with a step-through viewer](index.html).",
         "",
+        *_index_markdown(report),
         "## Bounded model checker",
         "",
         f"Robots {b.robots[0]}..{b.robots[1]}, window {b.window[0]}x{b.window[1]} lattice points"
@@ -267,10 +339,10 @@ def model_markdown(report: ModelReport) -> str:
         "",
     ]
     lines += [*_md_table(_search_head(report), _search_rows(report)), ""]
-    lines += [*_md_table(CHECK_HEAD, _check_rows(report)), ""]
+    lines += [*_md_table(CHECK_HEAD, _check_rows(report)), "", _search_legend(report), ""]
     lines += ["## Prover (z3, any swarm size)", "", f"Solver: {report.prove['solver']}.", ""]
     unproved = _not_encoded(report)
-    lines += [unproved, ""] if unproved else [*_md_table(PROVE_HEAD, _prove_rows(report)), ""]
+    lines += [unproved, ""] if unproved else [*_md_table(PROVE_HEAD, _prove_rows(report)), "", PROVE_LEGEND, ""]
     lines += against_markdown(report.against)
     lines += ["## Counterexamples", "", "Long numbers are rounded (≈); the trace files hold them exactly.", ""]
     for t in report.traces:
@@ -286,16 +358,28 @@ def model_markdown(report: ModelReport) -> str:
     return "\n".join(lines)
 
 
-def _html_table(headers: list[str], rows: list[list[str]], verdict_col: int | None = None) -> str:
+def _html_table(
+    headers: list[str],
+    rows: list[list[str]],
+    verdict_col: int | None = None,
+    nowrap: tuple[str, ...] = (),
+    detail: str | None = None,
+) -> str:
+    """A table; the cells of the columns named in ``nowrap`` never wrap (a lemma, a verdict, a
+    number); the ``detail`` column's long numbers may break anywhere, no other word breaks."""
     head = "".join(f"<th>{html.escape(h)}</th>" for h in headers)
+    classes = ["nw" if h in nowrap else "detail" if h == detail else "" for h in headers]
     body = []
     for r in rows:
         cells = []
         for i, c in enumerate(r):
-            cls = f' class="{html.escape(c)}"' if i == verdict_col else ""
+            names = " ".join(part for part in (c if i == verdict_col else "", classes[i]) if part)
+            cls = f' class="{html.escape(names)}"' if names else ""
             if c.startswith("[trace]("):
                 href = c[len("[trace](") : -1]
                 c_html = f'<a href="{html.escape(href)}">trace</a>'
+            elif headers[i] == "case":  # a case's name breaks only after a dot or a "+" (no hyphen breaks)
+                c_html = html.escape(c).replace(".", ".<wbr>").replace(" + ", " +<wbr> ")
             else:
                 c_html = html.escape(c)
             cells.append(f"<td{cls}>{c_html}</td>")
@@ -340,14 +424,17 @@ def model_html(report: ModelReport) -> str:
         f"<h1>Model <code>{html.escape(m.name)}</code></h1><p>{html.escape(m.description)}</p>",
         f"<p>Readings: {_readings_html(report, '../')} (<a href='{html.escape('../' + DOCS_LINK)}'>what the readings "
         "mean</a>). <a href='../index.html'>All models</a>.</p>",
+        _index_html(report),
         f"<h2>Bounded model checker</h2><p>Robots {b.robots[0]}..{b.robots[1]}, "
         f"window {b.window[0]}x{b.window[1]}.</p>",
-        _html_table(_search_head(report), _search_rows(report)),
-        _html_table(CHECK_HEAD, _check_rows(report), verdict_col=2),
+        _html_table(_search_head(report), _search_rows(report), nowrap=tuple(_search_head(report))),
+        _html_table(CHECK_HEAD, _check_rows(report), verdict_col=2, nowrap=NOWRAP, detail="detail"),
+        f'<p class="legend">{html.escape(_search_legend(report))}</p>',
         f"<h2>Prover</h2><p>Solver: {html.escape(report.prove['solver'])}.</p>",
         f"<p>{html.escape(_not_encoded(report))}</p>"
         if _not_encoded(report)
-        else _html_table(PROVE_HEAD, _prove_rows(report), verdict_col=3),
+        else _html_table(PROVE_HEAD, _prove_rows(report), verdict_col=3, nowrap=NOWRAP, detail="detail")
+        + f'<p class="legend">{html.escape(PROVE_LEGEND)}</p>',
         *([against_html(report.against)] if report.against else []),
         "<h2>Counterexamples</h2>",
     ]
@@ -385,6 +472,8 @@ def cross_model_markdown(reports: list[ModelReport]) -> str:
     headers, rows = _matrix(reports)
     rows = [[f"[{r[0]}]({r[0]}/README.md)", *r[1:]] for r in rows]
     lines = ["# fatline-verify reports", "", INTRO, "", *_md_table(headers, rows), ""]
+    notes = _not_run_markdown(reports)
+    lines += [*notes, ""] if notes else []
     lines += [f"What each reading (`option=reading`) means: [{READINGS_DOC}]({DOCS_LINK}).", ""]
     lines += ["Regenerate everything: `fatline report` (every shipped model).", ""]
     return "\n".join(lines)
@@ -436,9 +525,28 @@ def _matrix_html(reports: list[ModelReport]) -> str:
         cells = [f'<td class="model"><a href="{name}/index.html">{name}</a></td>']
         cells.append(f'<td class="readings">{_readings_html(r, "", sep="<br>")}</td>')
         cells += [_check_cell(r.check["lemmas"], lemma.value) for lemma in CHECKED]
-        cells += [_prove_cell(r.prove["obligations"], lemma.value) for lemma in PROVER_LEMMAS]
+        not_run = _not_run(r)
+        if not_run:
+            title = html.escape(str(r.prove["not_encoded"]))
+            cells.append(f'<td class="notrun" colspan="{prove}" title="{title}">{html.escape(not_run)}</td>')
+        else:
+            cells += [_prove_cell(r.prove["obligations"], lemma.value) for lemma in PROVER_LEMMAS]
         body.append("<tr>" + "".join(cells) + "</tr>")
     return f'<table class="matrix">{head}{"".join(body)}</table>'
+
+
+def _not_run(report: ModelReport) -> str:
+    """Why a model's prover cells are empty (the prover refuses it), in a few words; "" if they are not."""
+    if not report.prove.get("not_encoded"):
+        return ""
+    if report.model.options.scheduler is Scheduler.ASYNC:
+        return "not run: the prover encodes round schedulers only (an asynchronous robot may act on a stale view)"
+    return "not run: the prover has no encoding of this model (its page says why)"
+
+
+def _not_run_markdown(reports: list[ModelReport]) -> list[str]:
+    """Below the Markdown matrix: why a model's prover cells are empty."""
+    return [f"{r.model.name}: no prover cells, {_not_run(r)}." for r in reports if _not_run(r)]
 
 
 LEMMA_ORDER = {lemma.value: k for k, lemma in enumerate(CHECKED)}
