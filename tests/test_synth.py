@@ -15,7 +15,7 @@ from fatline_verify.repair.pocket import POCKET
 from fatline_verify.repair.reach import PROVED, Family, Kind, canonical, family_legs, reach, starts
 from fatline_verify.rules import registry
 from fatline_verify.rules.table.algorithm import TABLES, load
-from fatline_verify.schedulers.round import decide_all, snapshot
+from fatline_verify.schedulers.round import decide_all
 from fatline_verify.synth.certificate import certify
 from fatline_verify.synth.encode import find_cycles, synthesise
 from fatline_verify.synth.replay import replay
@@ -114,25 +114,37 @@ def test_a_core_is_deletion_minimal_and_replayed(repaired):
     assert not r.sat and r.core == (pocket,)
 
 
-def test_the_shipped_table_replays_and_the_rule_set_plays_it(repaired):
-    """Every shipped table is replayed through the executable model at the bounds it names, and its rule set
-    decides as the table does."""
-    files = sorted(TABLES.glob("*.json"))
-    assert files
-    for path in files:
-        shipped = load(path)
-        data = json.loads(path.read_text())
-        kinds = frozenset(Kind(k) for k in data["legs"])
-        lo, hi = data["searches"][-1]["robots"]
-        model = repaired.with_q(shipped.table.q)
-        got = replay(shipped.table, model, range(lo, hi + 1), tuple(data["window"]), kinds, Scheduler(data["scheduler"]))
-        assert got.problems == [], (path, got.problems[:3])
-        table_model = load_model(ROOT / "bench" / f"{shipped.name}.toml")
-        assert registry.of(table_model).name == shipped.name
-        for start in starts(model, hi, tuple(data["window"]))[:50]:
-            for i, d in decide_all(start, table_model).items():
-                assert d.destination == shipped.table.action(view_of(start, i, model))
-                assert snapshot(start, i, model)  # a connected start: each robot sees one
+def _tables():
+    """Each shipped table; those searched for more than 3 robots replay in the slow tier (minutes in Python)."""
+    out = []
+    for path in sorted(TABLES.glob("*.json")):
+        hi = json.loads(path.read_text())["searches"][-1]["robots"][1]
+        out.append(pytest.param(path, id=path.stem, marks=[pytest.mark.slow] if hi > 3 else []))
+    return out
+
+
+def test_there_is_a_shipped_table_replayed_in_the_default_tier():
+    assert any(not p.marks for p in _tables())
+
+
+@pytest.mark.parametrize("path", _tables())
+def test_the_shipped_table_replays_and_the_rule_set_plays_it(repaired, path):
+    """A shipped table is replayed through the executable model at the bounds it names, and its rule set
+    (and its model in bench/) decides as the table does."""
+    shipped = load(path)
+    data = json.loads(path.read_text())
+    kinds = frozenset(Kind(k) for k in data["legs"])
+    lo, hi = data["searches"][-1]["robots"]
+    window = tuple(data["window"])
+    model = repaired.with_q(shipped.table.q)
+    got = replay(shipped.table, model, range(lo, hi + 1), window, kinds, Scheduler(data["scheduler"]))
+    assert got.problems == [], (path, got.problems[:3])
+    table_model = load_model(ROOT / "bench" / f"{shipped.name}.toml")
+    assert registry.of(table_model).name == shipped.name
+    assert table_model.bounds.robots == (lo, hi) and table_model.bounds.window == window
+    for start in starts(model, hi, window)[:50]:
+        for i, d in decide_all(start, table_model).items():
+            assert d.destination == shipped.table.action(view_of(start, i, model))
 
 
 def test_view_text_round_trips():
@@ -142,8 +154,9 @@ def test_view_text_round_trips():
 
 def test_cli_sat_writes_a_sealed_table(capsys, tmp_path):
     out = tmp_path / "t.json"
-    code, stdout, _ = run_cli(capsys, "synth", "--robots", "2..3", "--window", "7x7", "--scheduler", "ssync", "-q",
-                              "--json", str(out))
+    code, stdout, _ = run_cli(
+        capsys, "synth", "--robots", "2..3", "--window", "7x7", "--scheduler", "ssync", "-q", "--json", str(out)
+    )
     assert code == 0, stdout
     assert "2..3" in stdout and "SAT" in stdout and "replayed" in stdout
     data = json.loads(out.read_text())
@@ -153,13 +166,14 @@ def test_cli_sat_writes_a_sealed_table(capsys, tmp_path):
     # a second run does not overwrite a file fatline did not write
     foreign = tmp_path / "mine.json"
     foreign.write_text("{}")
-    code, _, err = run_cli(capsys, "synth", "--robots", "2", "--window", "7x7", "-q", "--json", str(foreign))
+    code, _, _ = run_cli(capsys, "synth", "--robots", "2", "--window", "7x7", "-q", "--json", str(foreign))
     assert code == 2 and foreign.read_text() == "{}"
 
 
 def test_cli_unsat_exits_1_and_names_the_core(capsys):
-    code, stdout, _ = run_cli(capsys, "synth", "--q", "2", "--robots", "3", "--window", "9x9", "--scheduler",
-                              "centralized", "-q")
+    code, stdout, _ = run_cli(
+        capsys, "synth", "--q", "2", "--robots", "3", "--window", "9x9", "--scheduler", "centralized", "-q"
+    )
     assert code == 1
     assert "UNSAT" in stdout and '--init "0,3/2 1,7/2 3/2,0"' in stdout and "glucose4: UNSAT" in stdout
 

@@ -10,8 +10,11 @@ of the checker's (connected, apart, in the window), every execution reaches a li
 ``vertical-line`` goal) without a round that collides, splits the swarm or crosses the RMA: every
 reachable configuration off a line has a robot the table moves, every round the scheduler allows is
 safe, and no execution cycles (a rank over the reachable configurations that every round lowers exists
-exactly when the reachable round graph is acyclic). States are kept up to translation; a line is a sink
-(every leg keeps a line a line: no robot on it sees one right of it).
+exactly when the reachable round graph is acyclic). No fairness is assumed: every execution the scheduler
+allows counts, so the checker's ``termination`` (weakly fair cycles only) follows from a table found here,
+and an unsat answer says no table ends *every* execution on a line (a table live only under fairness is
+not ruled out). States are kept up to translation; a line is a sink (every leg keeps a line a line: no
+robot on it sees one right of it).
 
 The encoding (python-sat)
 -------------------------
@@ -38,12 +41,13 @@ from __future__ import annotations
 
 import time
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from itertools import combinations
 
 from pysat.solvers import Solver
 
 from ..model.config import Model
+from ..model.numbers import Point
 from ..model.options import Scheduler
 from ..model.swarm import is_goal
 from ..repair.reach import PROVED, Family, Kind, Moves, State, canonical, family_legs, moved, starts
@@ -116,7 +120,7 @@ class Encoder:
         self.top = 0
         self.clauses = 0
         self.reach: dict[State, int] = {}
-        self.views: dict[View, tuple[tuple[int, ...], tuple[tuple[int, int], ...]]] = {}
+        self.views: dict[View, tuple[tuple[int, ...], tuple[Point, ...]]] = {}
         """Each view's action variables (stay first) and leg ends (stay first)."""
         self.robot_views: dict[State, tuple[View, ...]] = {}
         self.multi: set[tuple[State, tuple[int, ...]]] = set()
@@ -135,10 +139,10 @@ class Encoder:
         if self.keep is not None:
             self.keep.append(c)
 
-    def view(self, v: View) -> tuple[tuple[int, ...], tuple[tuple[int, int], ...]]:
+    def view(self, v: View) -> tuple[tuple[int, ...], tuple[Point, ...]]:
         got = self.views.get(v)
         if got is None:
-            ends = (ORIGIN, *(end for end, _ in family_legs(v, self.model, self.kinds)))
+            ends: tuple[Point, ...] = (ORIGIN, *(end for end, _ in family_legs(v, self.model, self.kinds)))
             lits = tuple(self._var() for _ in ends)
             self.add(lits)
             for x, y in combinations(lits, 2):
@@ -179,17 +183,17 @@ class Encoder:
             self.add((-r, *enabled))
         return self.reach[s]
 
-    def choice(self, s: State, i: int, end: tuple[int, int]) -> int:
+    def choice(self, s: State, i: int, end: Point) -> int:
         lits, ends = self.views[self.robot_views[s][i]]
         return lits[ends.index(end)]
 
     def table(self, model_lits: set[int]) -> Table:
-        legs = {}
+        legs: dict[View, Point] = {}
         for v, (lits, ends) in self.views.items():
             for lit, end in zip(lits, ends, strict=True):
                 if lit in model_lits:
                     legs[v] = end
-        return Table(self.model.parameters.q, self.model.parameters.rad_v, legs)
+        return Table(int(self.model.parameters.q), int(self.model.parameters.rad_v), legs)
 
     def rounds(self, s: State, table: Table) -> list[Moves]:
         """Every round the scheduler allows from ``s`` under ``table`` (its enabled robots' legs)."""
@@ -233,8 +237,8 @@ class Encoder:
             return False, 0, len(seen)
         cycles = find_cycles(edges)
         for cycle in cycles:
-            guard = {-self.choice(s, i, e) for s, moves in cycle for i, e in moves}
-            self.add((-self.reach[cycle[0][0]], *sorted(guard)))
+            lits = {-self.choice(s, i, e) for s, moves in cycle for i, e in moves}
+            self.add((-self.reach[cycle[0][0]], *sorted(lits)))
             self.cycles += 1
         if cycles:
             return False, 0, len(seen)
@@ -419,8 +423,14 @@ def independent_check(model: Model, result: SynthResult, solver: str) -> bool:
     """An unsat answer solved again from its core alone with a fresh encoding and another solver: whether
     it is unsat again."""
     again = synthesise(
-        model, result.n, result.window, result.kinds, scheduler=result.scheduler, solver=solver,
-        minimise=False, only=list(result.core),
+        model,
+        result.n,
+        result.window,
+        result.kinds,
+        scheduler=result.scheduler,
+        solver=solver,
+        minimise=False,
+        only=list(result.core),
     )
     return not again.sat
 

@@ -73,7 +73,7 @@ def replay(
             continue
         movers = sorted(decisions)
         if scheduler is Scheduler.CENTRALIZED:
-            sets = [(i,) for i in movers]
+            sets: list[tuple[int, ...]] = [(i,) for i in movers]
         else:
             sets = [c for k in range(1, len(movers) + 1) for c in combinations(movers, k)]
         for active in sets:

@@ -43,7 +43,8 @@ def synth_lines(
         f"tables: a robot's view (what it sees within rad_v, relative to it) -> one leg of {kinds_text(first.kinds)} "
         "(fatline reach's family, under its lock), or stay",
         f"scheduler: {first.scheduler.value}; initial configurations: every one in a {w}x{h} window of lattice "
-        f"points; live: every execution reaches one vertical, every round safe; solver {first.solver} (python-sat)",
+        f"points; live: every execution the scheduler allows (no fairness assumed) reaches one vertical, every "
+        f"round safe; solver {first.solver} (python-sat)",
         "",
         "one table for every robot count of a row (a robot does not know how many there are)",
         "",
@@ -62,12 +63,15 @@ def synth_lines(
         if r.sat:
             assert r.table is not None and cert.replay is not None
             rp = cert.replay
-            verdict = "replayed: every round safe, every execution on a line" if not rp.problems else (
-                f"REPLAY FAILED: {rp.problems[0]}"
+            verdict = (
+                "replayed: every round safe, every execution on a line"
+                if not rp.problems
+                else (f"REPLAY FAILED: {rp.problems[0]}")
             )
+            moving = sum(e != (0, 0) for e in r.table.legs.values())
             lines.append(
-                f"{counts_text(r)} robots: SAT, a table of {sum(e != (0, 0) for e in r.table.legs.values()):,} moving views (of {len(r.table.legs):,} the table's own "
-                f"executions meet); {verdict} (executable model: {rp.states:,} configurations, "
+                f"{counts_text(r)} robots: SAT, a table of {moving:,} moving views (of {len(r.table.legs):,} the "
+                f"table's own executions meet); {verdict} (executable model: {rp.states:,} configurations, "
                 f"{rp.rounds_played:,} rounds played, at most {rp.rounds} rounds to a line)"
             )
             continue
@@ -77,7 +81,8 @@ def synth_lines(
         )
         for row in cert.core[:shown]:
             planner = (
-                f"a line in {row.planner} rounds by the family (replayed)" if row.planner is not None
+                f"a line in {row.planner} rounds by the family (replayed)"
+                if row.planner is not None
                 else "no line reachable by any rounds of the family"
             )
             alone = "a table exists for it alone" if row.alone else "no table for it alone"
