@@ -213,3 +213,26 @@ def test_no_table_of_left_and_corner_legs_is_live_for_4_robots_at_q1(repaired, s
 def test_4_robots_at_q1_with_proved_legs_is_unsat_at_a_stuck_configuration(repaired):
     r = synthesise(repaired, 4, (9, 9), PROVED, scheduler=Scheduler.CENTRALIZED)
     assert not r.sat and set(r.core) <= set(reach(repaired, 4, (9, 9), PROVED).stuck)
+
+
+def test_a_changed_table_file_is_refused(tmp_path):
+    """A shipped table carries its digest: an edited leg is refused, naming the file, not played."""
+    from fatline_verify.errors import OutputFailed
+
+    src = sorted(TABLES.glob("*.json"))[0]
+    data = json.loads(src.read_text())
+    rows = data["searches"][-1]["table"]
+    view = next(iter(rows))
+    rows[view] = "0,-1" if rows[view] != "0,-1" else "0,1"
+    bad = tmp_path / src.name
+    bad.write_text(json.dumps(data))
+    with pytest.raises(OutputFailed, match=src.name):
+        load(bad)
+
+
+def test_a_table_rule_set_refuses_another_lattice(repaired):
+    from fatline_verify.errors import InvalidModel
+
+    model = load_model(ROOT / "bench" / "table-q1-9x9-ssync.toml").with_q(2)
+    with pytest.raises(InvalidModel, match="q=2"):
+        decide_all(((0, 0), (4, 0)), model)

@@ -25,8 +25,9 @@ from .common import (
 )
 from .reach import DEFAULT_MODEL, MAX_Q, _kinds
 
-MAX_ROBOTS = 6
-"""Every configuration the table may meet is a state of the search: beyond this the formula outgrows memory."""
+MAX_ROBOTS = 5
+"""Every configuration the table may meet is a state of the search, in Python: 4 robots in 9x9 take minutes;
+beyond 5 the formula outgrows one machine."""
 
 
 def _scheduler(text: str | None, model: Any) -> Any:
@@ -60,7 +61,9 @@ def cmd_synth(args: argparse.Namespace) -> int:
         raise InvalidInput(f"solver={args.solver!r}: expected one of {', '.join(SOLVERS)}")
     lo, hi = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else model.bounds.robots
     if hi > MAX_ROBOTS:
-        raise InvalidInput(f"robots={hi}: expected at most {MAX_ROBOTS} (every reachable configuration is in the formula)")
+        raise InvalidInput(
+            f"robots={hi}: expected at most {MAX_ROBOTS} (every reachable configuration is in the formula)"
+        )
     window = parse_window(args.window, error=InvalidInput) if args.window is not None else model.bounds.window
     for n in range(lo, hi + 1):
         try:
@@ -120,16 +123,21 @@ def register(sub: Any) -> None:
     add_bounds(p)
     p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")
     p.add_argument(
-        "--with", dest="with_", metavar="KINDS", help="also what-if legs no proof covers: left, corner (comma-separated)"
+        "--with",
+        dest="with_",
+        metavar="KINDS",
+        help="also what-if legs no proof covers: left, corner (comma-separated)",
     )
+    p.add_argument("--scheduler", help="centralized or ssync (default: the model's scheduler)")
     p.add_argument(
-        "--scheduler", help="centralized or ssync (default: the model's scheduler)"
+        "--solver", default=SOLVERS[0], help=f"python-sat solver, one of {', '.join(SOLVERS)} (default: {SOLVERS[0]})"
     )
-    p.add_argument("--solver", default=SOLVERS[0], help=f"python-sat solver, one of {', '.join(SOLVERS)} (default: {SOLVERS[0]})")
+    p.add_argument("--no-again", action="store_true", help="do not solve an unsat core again with another solver")
     p.add_argument(
-        "--no-again", action="store_true", help="do not solve an unsat core again with another solver"
+        "--json",
+        type=nonempty("json", "a file name for the JSON results"),
+        help="write the results (tables, cores) as JSON",
     )
-    p.add_argument("--json", type=nonempty("json", "a file name for the JSON results"), help="write the results (tables, cores) as JSON")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress")
     add_force(p)
     p.set_defaults(handler=cmd_synth)

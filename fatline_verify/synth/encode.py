@@ -28,7 +28,7 @@ Variables: ``a[v, k]`` (view ``v`` takes action ``k``, exactly one per view; ``k
 * found lazily (*refinement*): rounds of several movers under SSYNC (``R[s] & a[..] & a[..] -> R[s']`` or
   ``-> false``), and cycles: ``R[s_0] -> NOT(all the choices along the cycle)``.
 
-Each candidate table the solver returns is played exactly (:func:`explore`): every round the scheduler
+Each candidate table the solver returns is played exactly (:meth:`Encoder.refine`): every round the scheduler
 allows from every initial configuration. A round the formula does not yet hold, or a cycle, adds its
 clause and the solver runs again; a table whose play needs no new clause is safe and live (acyclic,
 every state off a line enabled, every round safe) and is returned. Every clause holds of every safe,
@@ -203,8 +203,8 @@ class Encoder:
         return [tuple(c) for k in range(1, len(movers) + 1) for c in combinations(movers, k)]
 
     def refine(self, starts_: list[State], table: Table) -> tuple[bool, int, int]:
-        """Play ``table`` from ``starts_`` (:func:`explore`); add the clauses it lacks. Returns whether none
-        was missing, the longest way to a line and the configurations reached."""
+        """Play ``table`` from ``starts_`` (every round its scheduler allows); add the clauses it lacks.
+        Returns whether none was missing, the longest way to a line and the configurations reached."""
         edges: dict[State, list[tuple[State, Moves]]] = {}
         added = False
         seen = set(starts_)
