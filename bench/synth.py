@@ -1,7 +1,8 @@
 #!/usr/bin/env python
 """Figures of ``fatline synth`` (docs/synth.md): per leg family, lattice, robot count and scheduler, the answer
-(SAT: one safe, live table for every count from 2 robots to that one; UNSAT: none exists), the size of the search and the seconds; then the last formula
-of one search solved again from scratch by each python-sat solver and by z3, in-solver seconds only.
+(SAT: one safe, live table for every count from 2 robots to that one; UNSAT: none exists), the size of the
+search and the seconds; then the last formula of one search solved again from scratch by each python-sat
+solver and by z3, in-solver seconds only.
 
 Usage: python bench/synth.py [--quick]   (from the repository root; --quick: the 7x7 rows and the comparison)."""
 
@@ -57,18 +58,25 @@ def compare(model, kinds, n, window, scheduler) -> str:  # type: ignore[no-untyp
 def main() -> None:
     quick = "--quick" in sys.argv[1:]
     base = load_model("repaired")
-    print("| legs | q | robots | window | scheduler | answer | initial | states | views | variables | clauses "
-          "| refinements | core | seconds |")
+    print(
+        "| legs | q | robots | window | scheduler | answer | initial | states | views | variables | clauses "
+        "| refinements | core | seconds |"
+    )
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for fam, q, n, w, sch in rows(quick):
         r = synthesise(base.with_q(q), n, (w, w), FAMILIES[fam], scheduler=sch, smallest=2)
         s = r.stats
-        print(f"| {fam} | {q} | 2..{n} | {w}x{w} | {sch.value} | {'SAT' if r.sat else 'UNSAT'} | {r.initial:,} | "
-              f"{s.states:,} | {s.views:,} | {s.variables:,} | {s.clauses:,} | {s.refinements:,} | "
-              f"{len(r.core) if not r.sat else ''} | {s.seconds:.1f} |", flush=True)
+        print(
+            f"| {fam} | {q} | 2..{n} | {w}x{w} | {sch.value} | {'SAT' if r.sat else 'UNSAT'} | {r.initial:,} | "
+            f"{s.states:,} | {s.views:,} | {s.variables:,} | {s.clauses:,} | {s.refinements:,} | "
+            f"{len(r.core) if not r.sat else ''} | {s.seconds:.1f} |",
+            flush=True,
+        )
     print()
-    print("7x7, 4 robots, + left, corner, centralized, the last formula solved afresh:",
-          compare(base, LEFT_CORNER, 4, (7, 7), C))
+    print(
+        "7x7, 4 robots, + left, corner, centralized, the last formula solved afresh:",
+        compare(base, LEFT_CORNER, 4, (7, 7), C),
+    )
 
 
 if __name__ == "__main__":
