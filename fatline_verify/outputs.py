@@ -47,6 +47,7 @@ class Kind(StrEnum):
     PROVE = "fatline-prove"
     SWEEP = "fatline-sweep"
     REACH = "fatline-reach"
+    SYNTH = "fatline-synth"
     PAGE = "fatline-page"
     """Report pages, assets and pictures (text files carrying :data:`TEXT_MARKER`)."""
     JUNIT = "fatline-junit"
@@ -59,6 +60,7 @@ class Kind(StrEnum):
             Kind.PROVE: "a fatline prove result",
             Kind.SWEEP: "a fatline sweep",
             Kind.REACH: "a fatline reach result",
+            Kind.SYNTH: "a fatline synth result",
             Kind.PAGE: "a page fatline report wrote",
             Kind.JUNIT: "a JUnit XML report fatline wrote",
         }[self]

@@ -378,6 +378,18 @@ def replay_witness(start: State, steps: list[tuple[State, Moves]], family: Famil
     return problems
 
 
+def way_to_line(start: State, family: Family, *, one_mover: bool = False) -> list[tuple[State, Moves]] | None:
+    """A shortest way from ``start`` to a line by any rounds of ``family`` (rounds of one mover with
+    ``one_mover``), as ``(state, round)`` steps for :func:`replay_witness`, or ``None`` when no state on a
+    line is reachable (the search is exhaustive: the legs keep the swarm connected, so it is finite)."""
+    graph = _Graph(family.one_mover if one_mover else family.any_movers, family.safe)
+    graph.close([canonical(start)])
+    dist = graph.distances(lambda s: is_goal(s, family.model))
+    if canonical(start) not in dist:
+        return None
+    return _path(graph, dist, canonical(start))
+
+
 def confirm_stuck(start: State, family: Family) -> int:
     """The number of states reachable from ``start`` by any rounds of ``family``, searched afresh;
     raises if one of them is on a line (the search's answer would be wrong)."""
@@ -461,4 +473,5 @@ __all__ = [
     "reach",
     "refuse",
     "replay_witness",
+    "way_to_line",
 ]

@@ -40,6 +40,7 @@ BUILTIN = (
     "fatline_verify.rules.paper.rule_set",
     "fatline_verify.rules.repaired.rule_set",
     "fatline_verify.rules.certified.rule_set",
+    "fatline_verify.rules.table.rule_set",
 )
 """The modules that register this package's own rule sets."""
 

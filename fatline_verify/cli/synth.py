@@ -1,0 +1,143 @@
+"""``fatline synth``: search for an oblivious rule table of the family's legs that is safe and live, or prove
+that none exists (fatline_verify/synth/)."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from ..errors import InvalidInput
+from ..model.config import parse_robots, parse_window
+from ..outputs import Kind, claim_file, write_json
+from ..progress import Progress
+from .common import (
+    EXIT_FOUND,
+    EXIT_INTERRUPTED,
+    EXIT_OK,
+    add_bounds,
+    add_command,
+    add_force,
+    add_model_argument,
+    emit,
+    integer,
+    model_arg,
+    nonempty,
+)
+from .reach import DEFAULT_MODEL, MAX_Q, _kinds
+
+MAX_ROBOTS = 5
+"""Every configuration the table may meet is a state of the search, in Python: 4 robots in 9x9 take minutes;
+beyond 5 the formula outgrows one machine."""
+
+
+def _scheduler(text: str | None, model: Any) -> Any:
+    from ..model.options import Scheduler
+    from ..synth.encode import SCHEDULERS, schedulers_text
+
+    name = text if text is not None else model.options.scheduler.value
+    if name not in {s.value for s in SCHEDULERS}:
+        where = f"scheduler={name!r}" + ("" if text is not None else f" (model {model.name})")
+        raise InvalidInput(
+            f"{where}: the encoding covers schedulers that may activate one robot alone; expected one of "
+            f"{schedulers_text()} (--scheduler)"
+        )
+    return Scheduler(name)
+
+
+def cmd_synth(args: argparse.Namespace) -> int:
+    from ..model.lattice import KeyCodec
+    from ..repair.reach import refuse, starts
+    from ..synth.certificate import certify
+    from ..synth.encode import SOLVERS, synthesise
+    from ..synth.text import synth_lines, synth_to_json
+
+    model = model_arg(args.model)
+    kinds = _kinds(args.with_)
+    if args.q is not None:
+        model = model.with_q(args.q)
+    scheduler = _scheduler(args.scheduler, model)
+    refuse(model)
+    if args.solver not in SOLVERS:
+        raise InvalidInput(f"solver={args.solver!r}: expected one of {', '.join(SOLVERS)}")
+    lo, hi = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else model.bounds.robots
+    if hi > MAX_ROBOTS:
+        raise InvalidInput(
+            f"robots={hi}: expected at most {MAX_ROBOTS} (every reachable configuration is in the formula)"
+        )
+    window = parse_window(args.window, error=InvalidInput) if args.window is not None else model.bounds.window
+    for n in range(lo, hi + 1):
+        try:
+            KeyCodec(n, window)
+        except ValueError:
+            raise InvalidInput(
+                f"window={window[0]}x{window[1]} with robots={n}: a state does not pack into 63 bits; expected a "
+                "smaller window or fewer robots"
+            ) from None
+    empty = [n for n in range(lo, hi + 1) if not starts(model, n, window)]
+    if empty:
+        raise InvalidInput(
+            f"window={window[0]}x{window[1]}: no initial configuration of {empty[0]} robots fits it at "
+            f"q={model.parameters.q}; expected a larger --window"
+        )
+    json_path = claim_file(args.json, name="json", kind=Kind.SYNTH, force=args.force) if args.json else None
+
+    results = []
+    interrupted = False
+    with Progress(enabled=not args.quiet, unit="robot counts") as bar:
+        bar.stage(f"{model.name}: synthesising tables ({scheduler.value})", total=hi - lo + 1)
+        try:
+            for n in range(lo, hi + 1):
+                r = synthesise(model, n, window, kinds, scheduler=scheduler, solver=args.solver, smallest=lo)
+                results.append((r, certify(model, r, again=not args.no_again)))
+                bar.step(f"{lo}..{n} robots: {'SAT' if r.sat else 'UNSAT'}")
+                if not r.sat:  # more robots only add initial configurations: unsat stays unsat
+                    break
+        except KeyboardInterrupt:
+            interrupted = True
+    lines = synth_lines(model, args.model, results)
+    if interrupted:
+        done = ", ".join(str(r.n) for r, _ in results) or "none"
+        lines.append(f"INTERRUPTED: robot counts finished: {done}; the rest was not searched")
+    emit(lines)
+    if json_path is not None and results:
+        write_json(json_path, synth_to_json(model, results))
+        emit([f"results written to {json_path}"])
+    if interrupted:
+        return EXIT_INTERRUPTED
+    bad = [c.problems[0] for _, c in results if c.problems]
+    if bad:  # pragma: no cover - a table that fails its replay is a bug of the encoding
+        raise AssertionError(f"a synthesised table fails its replay: {bad[0]}")
+    return EXIT_FOUND if any(not r.sat for r, _ in results) else EXIT_OK
+
+
+def register(sub: Any) -> None:
+    from ..synth.encode import SOLVERS
+
+    p = add_command(
+        sub,
+        "synth",
+        "search for an oblivious rule table of the family's legs that is safe and live for small swarms, or prove "
+        "that none is (exit 1: some robot count is unsat)",
+    )
+    add_model_argument(p, default=DEFAULT_MODEL)
+    add_bounds(p)
+    p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")
+    p.add_argument(
+        "--with",
+        dest="with_",
+        metavar="KINDS",
+        help="also what-if legs no proof covers: left, corner (comma-separated)",
+    )
+    p.add_argument("--scheduler", help="centralized or ssync (default: the model's scheduler)")
+    p.add_argument(
+        "--solver", default=SOLVERS[0], help=f"python-sat solver, one of {', '.join(SOLVERS)} (default: {SOLVERS[0]})"
+    )
+    p.add_argument("--no-again", action="store_true", help="do not solve an unsat core again with another solver")
+    p.add_argument(
+        "--json",
+        type=nonempty("json", "a file name for the JSON results"),
+        help="write the results (tables, cores) as JSON",
+    )
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress")
+    add_force(p)
+    p.set_defaults(handler=cmd_synth)
