@@ -29,9 +29,10 @@ from ..model.numbers import Point
 from ..model.swarm import initial_problems, is_connected
 from ..repair.reach import Family, Kind
 from ..rules.paper.algorithm import ORIGIN, Decision, Rule
-from ..schedulers.round import closest_dist2, collides, disconnection, lost_edges, play_round
+from ..rules.repaired.options import RepairProgress
+from ..schedulers.round import closest_dist2, collides, disconnection, lost_edges, play_round, snapshot
 from .search import Budget, rounds, rounds_text
-from .smt.whatif import BRIDGED, REST, WhatIfSpec, argument, arith, build
+from .smt.whatif import BRIDGES, REST, VERTICAL_BRIDGE, WhatIfSpec, argument, arith, build
 
 VACUITY_SHARE = 0.05
 PROVED_ON = "unsat on the lattice q = {q}: holds for swarms of every size on it (the header's argument)"
@@ -136,11 +137,13 @@ def replay_whatif(
     """The solver's named robots as a swarm of ``reach``'s family with the spec's kinds: VIOLATED only if
     the swarm is connected and collision-free, each mover's leg is one its own view allows there, and
     the executable model's round breaks the claim."""
-    names = ["r", "o", *(["b"] if spec.form == BRIDGED else [])]
+    names = ["r", "o", *(["b"] if spec.form in BRIDGES else [])]
     names += sorted(n for n in positions if n.startswith("e") and not n.endswith("'"))
     m = model.with_q(spec.q) if model.parameters.q != spec.q else model
     state = tuple(_lattice(m, positions[n]) for n in names)
     movers = [0] if spec.other == REST else [0, 1]
+    if spec.form == VERTICAL_BRIDGE and spec.via != REST:
+        movers.append(2)
     moves = tuple((i, _minus(_lattice(m, positions[f"{names[i]}'"]), state[i])) for i in movers)
     shown = f"robots {list(state)} (lattice units, q = {spec.q}; {', '.join(names)}), round {list(moves)}"
     family = Family(m, family_kinds(spec))
@@ -152,6 +155,10 @@ def replay_whatif(
         if end not in {e for e, _ in family.legs(state, i)}:
             return (Verdict.INCONCLUSIVE, f"the legs' conditions admit a violation at {shown}, but the family's own "
                     f"tests do not allow robot {names[i]}'s leg there: not a counterexample", state, moves)  # fmt: skip
+    if spec.form in BRIDGES and not _bridge_used(fm, state, moves[0][1], spec.form == VERTICAL_BRIDGE):
+        return (Verdict.INCONCLUSIVE, f"the legs' conditions admit a violation at {shown}, but there r's edge test "
+                "for o passes by keeping it, or b is not a bridge by the family's own test: not a counterexample",
+                state, moves)  # fmt: skip
     ends = dict(moves)
     after = tuple((p[0] + ends[i][0], p[1] + ends[i][1]) if i in ends else p for i, p in enumerate(state))
     if spec.lemma is Lemma.NO_COLLISION:
@@ -160,11 +167,11 @@ def replay_whatif(
         broken = collides(closest_dist2(pr, po, state[0], state[1], fm), fm)
         what = "r and o collide"
     else:
-        claim = {(0, 1)} if spec.form != BRIDGED else {(0, 2), (1, 2)}
-        lost = [pair for pair, _ in lost_edges(state, after, fm) if pair in claim]
-        broken = bool(lost)
+        gone = {pair for pair, _ in lost_edges(state, after, fm)}
+        lost = sorted(gone & {(0, 1)}) + sorted(gone & {(0, 2), (1, 2)} if spec.form in BRIDGES else set())
+        broken = (0, 1) in gone and (spec.form not in BRIDGES or bool(gone & {(0, 2), (1, 2)}))
         split = disconnection(state, after, fm)
-        what = f"the edge {'-'.join(names[i] for i in lost[0])} is lost" if lost else ""
+        what = "lost: " + ", ".join("-".join(names[i] for i in pair) for pair in lost)
         what += "; the swarm splits" if split is not None else "; the swarm stays connected through the others"
     if not broken:
         return (Verdict.INCONCLUSIVE, f"the replayed round of {shown} keeps the claim", state, moves)
@@ -179,6 +186,34 @@ def replay_whatif(
         state,
         moves,
     )
+
+
+def _bridge_used(model: Model, state: tuple[Point, ...], end: Point, vertical: bool) -> bool:
+    """Whether, by ``repairs._edge_kept``'s own tests from r's view (robot 0, leg to ``end``), r's edge to
+    o (robot 1) is not kept and b (robot 2) bridges it (``vertical``: as a robot on r's vertical)."""
+    from ..rules.repaired.algorithm import _anywhere, _wherever
+
+    rho = model.radius
+    snap = snapshot(state, 0, model)
+    rel = [_minus(p, state[0]) for p in state]
+    c, b = rel[1], rel[2]
+    if all(model.sees(_d2(p, end)) for p in _wherever(c, end, True, rho)):
+        return False
+    corners = model.options.repair_progress is RepairProgress.CORNER
+    places = _anywhere(c, rho, snap, corners=corners)
+    if vertical:
+        mine = _anywhere(b, rho, snap, corners=True)
+        return (
+            corners
+            and b[0] == 0
+            and all(model.sees(_d2(p, end)) for p in mine)
+            and all(model.sees(_d2(p, cc)) for p in mine for cc in places)
+        )
+    return b[0] > 0 and model.sees(_d2(b, end)) and all(model.sees(_d2(b, p)) for p in places)
+
+
+def _d2(a: Point, b: Point) -> int:
+    return int((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2)
 
 
 def _minus(a: Point, b: Point) -> Point:

@@ -16,16 +16,19 @@ its swept disc, its class's condition on its vertical, and the edge kept or brid
 :mod:`fatline_verify.prove.smt.legs`). These obligations are those of :mod:`~fatline_verify.prove.smt.legs`
 (``no-collision/leg``, ``connectivity/kept``, ``connectivity/bridged``) over the extended set of
 classes, every pair in which at least one robot is on a what-if class or, with ``corner`` (whose
-edge tests differ), every pair.
+edge tests differ), every pair. Two differences from the shipped forms, both still covering every
+edge: ``bridged`` is asked only when r's edge test failed *kept* (``repairs._edge_kept`` tries it
+first; otherwise each mover kept the edge: the ``kept`` form), and claims that r-o is an edge after
+the round or r-b and b-o are (a path of at most two edges either way).
 
 They are decided **on the lattice** of the model (``x = X / q``, integers, exact), where the family
 of ``reach`` lives: a corner leg is sqrt(2) radii long, which the reals' nonlinear arithmetic does
 not decide in time, while on the lattice every quantity is an integer. ``unsat`` covers every swarm
 size on that lattice by the argument of :mod:`fatline_verify.prove.smt.legs` (the conditions are
 universal over the robots a mover sees; every collision and every edge with a mover at one end is
-an instance of one obligation), with one exception said in each header: under ``corner`` an edge may
-also pass a test bridged through a robot on the mover's own vertical, which may move, and no
-obligation here covers that form, so the corner's connectivity is not proved as a whole.
+an instance of one obligation). ``repairs._edge_kept`` passes an edge it does not keep through a
+robot right of the mover (at rest: the lock holds it), or, under ``corner``, through a robot on the
+mover's own vertical, which may move (``bridged-vertical``, one obligation per leg of that robot).
 """
 
 from __future__ import annotations
@@ -50,12 +53,15 @@ LEFTWARD, TOP_CORNER, BOTTOM_CORNER = "left", "top-corner", "bottom-corner"
 VERTICAL_PART = (TOP, BOTTOM, TOP_CORNER, BOTTOM_CORNER)
 CORNERS = (TOP_CORNER, BOTTOM_CORNER)
 REST = "rest"
-LEG, KEPT, BRIDGED = "leg", "kept", "bridged"
-FORMS = {Lemma.NO_COLLISION: (LEG,), Lemma.CONNECTIVITY: (KEPT, BRIDGED)}
+LEG, KEPT, BRIDGED, VERTICAL_BRIDGE = "leg", "kept", "bridged", "bridged-vertical"
+FORMS = {Lemma.NO_COLLISION: (LEG,), Lemma.CONNECTIVITY: (KEPT, BRIDGED, VERTICAL_BRIDGE)}
+BRIDGES = (BRIDGED, VERTICAL_BRIDGE)
 CLAIM = {
     (Lemma.NO_COLLISION, LEG): "r and the other robot o never come within distance 2 during the round",
     (Lemma.CONNECTIVITY, KEPT): "r and o, within view before the round, are within view after it",
-    (Lemma.CONNECTIVITY, BRIDGED): "r-b and b-o are edges after the round, b at rest",
+    (Lemma.CONNECTIVITY, BRIDGED): "r-o is an edge after the round, or r-b and b-o are (b at rest)",
+    (Lemma.CONNECTIVITY, VERTICAL_BRIDGE): "r-o is an edge after the round, or r-b and b-o are (b on r's vertical, "
+    "at rest or moving)",
 }
 
 
@@ -80,11 +86,14 @@ class WhatIfSpec:
     other: str
     kinds: frozenset[str]
     q: int
+    via: str = REST
+    """``bridged-vertical``: the bridge b's leg (or :data:`REST`)."""
 
     @property
     def key(self) -> str:
-        """``lemma/form-leg.and.other@q``: how rows and files name the obligation."""
-        return f"{self.lemma}/{self.form}-{self.mine}.and.{self.other}@q{self.q}"
+        """``lemma/form-leg.and.other[.via.leg]@q``: how rows and files name the obligation."""
+        via = f".via.{self.via}" if self.form == VERTICAL_BRIDGE else ""
+        return f"{self.lemma}/{self.form}-{self.mine}.and.{self.other}{via}@q{self.q}"
 
     @property
     def claim(self) -> str:
@@ -104,9 +113,16 @@ def whatif_specs(kinds: frozenset[str], q: int, lemmas: tuple[Lemma, ...]) -> li
     specs: list[WhatIfSpec] = []
     for lemma in lemmas:
         for form in FORMS.get(lemma, ()):
+            if form == VERTICAL_BRIDGE and CORNER not in kinds:
+                continue  # repairs._edge_kept bridges through a robot on r's vertical only under corner
             for i, mine in enumerate(legs):
-                others = [REST, *(legs if form == BRIDGED else legs[i:])]
+                others = [REST, *(legs if form in BRIDGES else legs[i:])]
                 for other in others:
+                    if form == VERTICAL_BRIDGE:
+                        specs += [
+                            WhatIfSpec(lemma, form, mine, other, frozenset(kinds), q, via) for via in (REST, *legs)
+                        ]
+                        continue
                     if CORNER not in kinds and mine in shipped and other in (shipped | {REST}):
                         continue  # a shipped obligation, unchanged (fatline prove repaired)
                     specs.append(WhatIfSpec(lemma, form, mine, other, frozenset(kinds), q))
@@ -171,16 +187,73 @@ def kept(ar: Arith, model: Model, m: Mover, c: Pt) -> z3.BoolRef:
     return z3.And(at_rest, z3.Implies(c[0] == m.at[0], sees(ar, model, m.end, _right(ar, c))))
 
 
-def bridged(ar: Arith, model: Model, m: Mover, c: Pt, b: Pt, corner_mode: bool) -> z3.BoolRef:
-    """``repairs._edge_kept``'s second test: ``b`` right of m, seen by m, sees m's end and every place
-    ``repairs._anywhere`` lists for ``c``. Under ``corner`` only the places it lists whatever else m
-    sees (c, and c one radius right if on m's vertical): fewer places, a weaker, still implied, test."""
-    anywhere = [sees(ar, model, b, c), z3.Implies(c[0] == m.at[0], sees(ar, model, b, _right(ar, c)))]
+def places(
+    ar: Arith, model: Model, m: Mover, c: Pt, corner_mode: bool, swarm: list[Pt] | None = None, c_leg: str = REST
+) -> list[tuple[z3.BoolRef, Pt]]:
+    """Where ``repairs._anywhere`` says a robot ``c`` that m sees may be after the round, each place with
+    the condition under which it is listed. Under ``corner`` the top's and bottom's places depend on
+    what else m sees on its vertical: with ``swarm`` (the named robots are all there are:
+    :func:`closed_swarm`) exactly; without, only what c's own leg ``c_leg`` says: if c on m's vertical
+    makes a top or top-corner leg, m sees no robot above c there (one above c that m sees is nearer to
+    c than to m, so c would see it and not be the top), so the top's places are listed; likewise the
+    bottom's for a bottom or bottom-corner leg. Leaving a place out weakens the test: still implied."""
+    one, true = ar.num(1), ar.true()
+    on = c[0] == m.at[0]
+    out: list[tuple[z3.BoolRef, Pt]] = [(true, c), (on, _right(ar, c))]
     if not corner_mode:
-        up, down = (c[0], c[1] + ar.num(1)), (c[0], c[1] - ar.num(1))
-        vertical = z3.And(sees(ar, model, b, up), sees(ar, model, b, down))
-        anywhere.append(z3.Implies(z3.And(c[0] == m.at[0], c[1] > m.at[1]), vertical))
+        above_m = z3.And(on, c[1] > m.at[1])
+        return [*out, (above_m, (c[0], c[1] + one)), (above_m, (c[0], c[1] - one))]
+
+    def none_seen(beyond: z3.BoolRef, p: Pt) -> z3.BoolRef:
+        return z3.Not(z3.And(sees(ar, model, m.at, p), p[0] == m.at[0], beyond))
+
+    others = [p for p in swarm or [] if p is not c and p is not m.at]
+    above = [none_seen(p[1] > c[1], p) for p in others]
+    below = [none_seen(p[1] < c[1], p) for p in others]
+    if swarm is None:
+        above = [] if c_leg in (TOP, TOP_CORNER) else [ar.false()]
+        below = [] if c_leg in (BOTTOM, BOTTOM_CORNER) else [ar.false()]
+    top = z3.And(on, c[1] > m.at[1], *above)
+    out += [(top, (c[0], c[1] + one)), (top, (c[0], c[1] - one)), (top, (c[0] + one, c[1] - one))]
+    rise = z3.If(c[1] + one <= m.at[1] - ar.num(3), c[1] + one, m.at[1] - ar.num(3))
+    bottom = z3.And(on, c[1] < m.at[1] - ar.num(3), *below)
+    return [*out, (bottom, (c[0], rise)), (bottom, (c[0] + one, rise))]
+
+
+def bridged(
+    ar: Arith,
+    model: Model,
+    m: Mover,
+    c: Pt,
+    b: Pt,
+    corner_mode: bool,
+    swarm: list[Pt] | None = None,
+    c_leg: str = REST,
+) -> z3.BoolRef:
+    """``repairs._edge_kept``'s second test: ``b`` right of m, seen by m, sees m's end and every place
+    :func:`places` lists for ``c``."""
+    where = places(ar, model, m, c, corner_mode, swarm, c_leg)
+    anywhere = [z3.Implies(cond, sees(ar, model, b, p)) for cond, p in where]
     return z3.And(b[0] > m.at[0], sees(ar, model, m.at, b), sees(ar, model, m.end, b), *anywhere)
+
+
+def vertical_bridged(
+    ar: Arith,
+    model: Model,
+    m: Mover,
+    c: Pt,
+    b: Pt,
+    swarm: list[Pt] | None = None,
+    c_leg: str = REST,
+    b_leg: str = REST,
+) -> z3.BoolRef:
+    """``repairs._edge_kept``'s third test (``repair_progress = corner``): ``b`` on m's vertical, seen by
+    m; every place :func:`places` lists for b sees m's end and every place it lists for c."""
+    bs = places(ar, model, m, b, True, swarm, b_leg)
+    cs = places(ar, model, m, c, True, swarm, c_leg)
+    facts = [z3.Implies(cb, sees(ar, model, pb, m.end)) for cb, pb in bs]
+    facts += [z3.Implies(z3.And(cb, cc), sees(ar, model, pb, pc)) for cb, pb in bs for cc, pc in cs]
+    return z3.And(b[0] == m.at[0], sees(ar, model, m.at, b), *facts)
 
 
 def _movers_close(ar: Arith, model: Model, r: Mover, o: Mover) -> z3.BoolRef:
@@ -209,15 +282,17 @@ def build(
     r, asserts = mover(ar, "r", spec.mine, ar.origin())
     o_at = ar.point("o")
     bodies: dict[str, Pt] = {"r": r.at, "o": o_at}
-    movers = [r]
-    o_end = o_at
+    movers = {"r": r}
     if spec.other != REST:
         o, more = mover(ar, "o", spec.other, o_at)
         asserts += more
-        movers.append(o)
-        o_end = o.end
-    if spec.form == BRIDGED:
+        movers["o"] = o
+    if spec.form in BRIDGES:
         bodies["b"] = ar.point("b")
+        if spec.form == VERTICAL_BRIDGE and spec.via != REST:
+            b, more = mover(ar, "b", spec.via, bodies["b"])
+            asserts += more
+            movers["b"] = b
     for k in range(1, extra + 1 if closed else 1):
         bodies[f"e{k}"] = ar.point(f"e{k}")
     box = ar.num(max(5, int(view_reach(model)) + 1))
@@ -225,22 +300,26 @@ def build(
     names = list(bodies)
     for i, a in enumerate(names):
         asserts += [apart(ar, model, bodies[a], bodies[b]) for b in names[i + 1 :]]
-    for m in movers:
+    for m in movers.values():
         asserts += [conditions(ar, model, m, p) for p in bodies.values() if p is not m.at]
+    swarm = list(bodies.values()) if closed else None
     if spec.form == KEPT:
         asserts += [sees(ar, model, r.at, o_at), kept(ar, model, r, o_at)]
-        asserts += [kept(ar, model, m, r.at) for m in movers[1:]]
+        asserts += [kept(ar, model, m, r.at) for n, m in movers.items() if n != "r"]
+    if spec.form in BRIDGES:
+        asserts += [sees(ar, model, r.at, o_at), z3.Not(kept(ar, model, r, o_at))]  # r's test did not keep it
     if spec.form == BRIDGED:
-        asserts += [sees(ar, model, r.at, o_at), bridged(ar, model, r, o_at, bodies["b"], spec.corner_mode)]
+        asserts.append(bridged(ar, model, r, o_at, bodies["b"], spec.corner_mode, swarm, c_leg=spec.other))
+    if spec.form == VERTICAL_BRIDGE:
+        asserts.append(vertical_bridged(ar, model, r, o_at, bodies["b"], swarm, spec.other, spec.via))
     if closed:
-        asserts += closed_swarm(ar, model, spec, movers, [p for n, p in bodies.items()])
-    before = list(bodies.values())
-    for m in movers:
-        bodies[f"{'r' if m is r else 'o'}'"] = m.end
-    if closed:
-        asserts.append(connected(ar, model, before))
+        asserts += closed_swarm(ar, model, spec, list(movers.values()), list(bodies.values()))
+        asserts.append(connected(ar, model, list(bodies.values())))
+    ends = {n: (movers[n].end if n in movers else p) for n, p in bodies.items()}
+    for n in movers:
+        bodies[f"{n}'"] = ends[n]
     if not vacuity:
-        asserts.append(_violation(ar, model, spec, movers, o_end, bodies.get("b")))
+        asserts.append(_violation(ar, model, spec, movers, ends))
     return Built(ar, asserts + bounds, bodies, "o")
 
 
@@ -266,7 +345,9 @@ def closed_swarm(ar: Arith, model: Model, spec: WhatIfSpec, movers: list[Mover],
     for m in movers:
         seen = [p for p in robots if p is not m.at]
         for p in seen:
-            bridges = [bridged(ar, model, m, p, b, spec.corner_mode) for b in seen if b is not p]
+            bridges = [bridged(ar, model, m, p, b, spec.corner_mode, robots) for b in seen if b is not p]
+            if spec.corner_mode:
+                bridges += [vertical_bridged(ar, model, m, p, b, robots) for b in seen if b is not p]
             out.append(z3.Implies(sees(ar, model, m.at, p), z3.Or(kept(ar, model, m, p), *bridges)))
         dx = m.end[0] - m.at[0]
         if m.leg in (HORIZONTAL, *CORNERS):
@@ -280,23 +361,17 @@ def closed_swarm(ar: Arith, model: Model, spec: WhatIfSpec, movers: list[Mover],
     return out
 
 
-def _violation(ar: Arith, model: Model, spec: WhatIfSpec, movers: list[Mover], o_end: Pt, b: Pt | None) -> z3.BoolRef:
-    r = movers[0]
+def _violation(ar: Arith, model: Model, spec: WhatIfSpec, movers: dict[str, Mover], ends: dict[str, Pt]) -> z3.BoolRef:
+    r, o_end = movers["r"], ends["o"]
     if spec.form == LEG:
-        if len(movers) == 1:
+        if "o" not in movers:
             return segment_close(ar, model, o_end, r.at, r.end)
-        return _movers_close(ar, model, r, movers[1])
+        return _movers_close(ar, model, r, movers["o"])
     if spec.form == KEPT:
         return z3.Not(sees(ar, model, r.end, o_end))
-    assert b is not None
-    return z3.Not(z3.And(sees(ar, model, r.end, b), sees(ar, model, b, o_end)))
-
-
-GAP = (
-    "Under corner, repairs._edge_kept also passes an edge bridged through a robot on the mover's own vertical "
-    "(which may move); no obligation here covers that form, so the corner's connectivity obligations, even all "
-    "unsat, do not prove connectivity as a whole."
-)
+    b = ends["b"]
+    path = z3.And(sees(ar, model, r.end, b), sees(ar, model, b, o_end))
+    return z3.Not(z3.Or(sees(ar, model, r.end, o_end), path))
 
 
 def argument(model: Model, spec: WhatIfSpec, built: Built) -> str:
@@ -323,10 +398,11 @@ def argument(model: Model, spec: WhatIfSpec, built: Built) -> str:
         "pairwise disjoint discs, within a box that excludes no violation.",
         "Why unsat covers swarms of every size on this lattice: the conditions asserted are universal over the "
         "robots a mover sees, and every collision, and every edge with a mover at one end, is an instance of one "
-        "obligation (fatline_verify/prove/smt/legs.py).",
+        "obligation (fatline_verify/prove/smt/legs.py): bridged when some mover's test for the other failed kept "
+        "(that mover is r), through a robot right of it (bridged) or, under corner, on its vertical "
+        "(bridged-vertical, that robot's leg named), kept otherwise; each edge before the round is then a path of "
+        "at most two edges after.",
     ]
-    if spec.corner_mode and spec.lemma is Lemma.CONNECTIVITY:
-        lines.append(GAP)
     return "\n".join(lines)
 
 
