@@ -36,7 +36,14 @@ from .smt.whatif import BRIDGES, REST, VERTICAL_BRIDGE, WhatIfSpec, argument, ar
 
 VACUITY_SHARE = 0.05
 PROVED_ON = "unsat on the lattice q = {q}: holds for swarms of every size on it (the header's argument)"
+WITNESSED = (
+    ", once the robot each mover's leg needs it to see is named (below a top-corner, above a bottom, right of a "
+    "left or horizontal leg)"
+)
 EXTRA = 2
+WITNESS_SHARE = 0.6
+"""The share of what is left of the budget, once an answer is not replayed, for the obligation with each
+mover's witness named (a proof); the rest goes to the searches for a counterexample the replay accepts."""
 """Robots at rest added to the named ones when looking for a counterexample the replay accepts."""
 
 
@@ -105,9 +112,13 @@ def prove_whatif(model: Model, spec: WhatIfSpec, *, timeout: float, out: Path | 
             verdict, reason, state, moves = replay_whatif(model, spec, ans.positions)
             if verdict is Verdict.VIOLATED:
                 return result(verdict, reason, state, moves)
+            named = spend.solve(build(arith(spec), model, spec, witnesses=True), spend.left() * WITNESS_SHARE)
+            if named.status == "unsat":
+                return result(Verdict.PROVED, PROVED_ON.format(q=spec.q) + WITNESSED)
             tried = []
             for extra in range(EXTRA + 1):
-                closed = spend.solve(build(arith(spec), model, spec, closed=True, extra=extra), budget)
+                share = spend.left() / (EXTRA + 1 - extra)
+                closed = spend.solve(build(arith(spec), model, spec, closed=True, extra=extra), share)
                 if closed.status == "sat":
                     again = replay_whatif(model, spec, closed.positions)
                     if again[0] is Verdict.VIOLATED:

@@ -270,12 +270,20 @@ def arith(spec: WhatIfSpec) -> Arith:
 
 
 def build(
-    ar: Arith, model: Model, spec: WhatIfSpec, *, vacuity: bool = False, closed: bool = False, extra: int = 0
+    ar: Arith,
+    model: Model,
+    spec: WhatIfSpec,
+    *,
+    vacuity: bool = False,
+    closed: bool = False,
+    extra: int = 0,
+    witnesses: bool = False,
 ) -> Built:
     """The obligation ``spec`` on ``ar``'s lattice; ``vacuity`` keeps only "the legs occur together".
     ``closed``: the named robots are the whole swarm (:func:`closed_swarm`), a stronger question whose
     answers are candidates for a counterexample, never a proof; ``extra`` more robots at rest ``e1``, ...
-    join them there (a test of a mover may pass through one).
+    join them there (a test of a mover may pass through one). ``witnesses``: each mover's leg needs a
+    robot it sees (:func:`witness`); name one per mover, a stronger obligation, still implied.
     Every named robot lies within a box of the larger of the view and 5 radii around r: a violation
     needs the robots within view (an edge) or within 2 + 2 sqrt(2) < 5 (a collision), so the box
     excludes none."""
@@ -295,6 +303,10 @@ def build(
             movers["b"] = b
     for k in range(1, extra + 1 if closed else 1):
         bodies[f"e{k}"] = ar.point(f"e{k}")
+    if witnesses:
+        for n, m in list(movers.items()):
+            bodies[f"w{n}"] = ar.point(f"w{n}")
+            asserts.append(witness(ar, model, m, bodies[f"w{n}"]))
     box = ar.num(max(5, int(view_reach(model)) + 1))
     bounds = [z3.And(p[i] >= -box, p[i] <= box) for n, p in bodies.items() if n != "r" for i in (0, 1)]
     names = list(bodies)
@@ -321,6 +333,23 @@ def build(
     if not vacuity:
         asserts.append(_violation(ar, model, spec, movers, ends))
     return Built(ar, asserts + bounds, bodies, "o")
+
+
+def witness(ar: Arith, model: Model, m: Mover, w: Pt) -> z3.BoolRef:
+    """The robot ``reach.family_legs`` needs ``m`` to see for its leg: one below it on its vertical for a
+    top-corner, above for a bottom or bottom-corner, right of it for a left leg, at least as far right
+    as the leg goes for a horizontal one (a top needs none: ``w`` is then any robot it sees)."""
+    seen = sees(ar, model, m.at, w)
+    on = w[0] == m.at[0]
+    if m.leg == TOP_CORNER:
+        return z3.And(seen, on, w[1] < m.at[1])
+    if m.leg in (BOTTOM, BOTTOM_CORNER):
+        return z3.And(seen, on, w[1] > m.at[1])
+    if m.leg == LEFTWARD:
+        return z3.And(seen, w[0] > m.at[0])
+    if m.leg == HORIZONTAL:
+        return z3.And(seen, w[0] - m.at[0] >= m.end[0] - m.at[0])
+    return seen
 
 
 def connected(ar: Arith, model: Model, robots: list[Pt]) -> z3.BoolRef:
