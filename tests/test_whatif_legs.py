@@ -18,7 +18,7 @@ from fatline_verify.prove.smt import whatif as w
 from fatline_verify.prove.smt.cases import Arith, Pt
 from fatline_verify.prove.whatif import family_kinds, prove_whatif
 from fatline_verify.repair.reach import Family, Kind
-from fatline_verify.schedulers.round import lost_edges, snapshot
+from fatline_verify.schedulers.round import disconnection, lost_edges, snapshot
 from tests.test_repairs import repaired, swarms
 
 
@@ -178,3 +178,33 @@ def test_bad_what_if_input_is_one_line_and_exit_2(argv, word, tmp_path, capsys):
     err = capsys.readouterr().err
     assert code == 2 and word in err and len(err.strip().splitlines()) == 1, err
     assert not any(tmp_path.iterdir())
+
+
+def test_a_corner_leg_against_a_corner_leg_never_collides_proved_on_the_lattice():
+    """The pair the reals left undecided (a sqrt(2) leg): exact on the lattice q = 1."""
+    spec = _spec("no-collision/leg-top-corner.and.bottom-corner@q1", frozenset({"corner"}), 1)
+    got = prove_whatif(repaired(1), spec, timeout=20, out=None)
+    assert got.verdict is Verdict.PROVED, got.reason
+
+
+def test_two_robots_of_one_vertical_stepping_left_split_the_swarm_under_corner():
+    """The bridge on r's vertical steps left with r: the replayed round splits the swarm (q = 1)."""
+    kinds = frozenset({"left", "corner"})
+    spec = _spec("connectivity/bridged-vertical-left.and.rest.via.left@q1", kinds, 1)
+    got = prove_whatif(repaired(1), spec, timeout=20, out=None)
+    assert got.verdict is Verdict.VIOLATED and "the swarm splits" in got.reason, got.reason
+    state, moves = got.state, dict(got.moves)
+    assert state[0][0] == state[2][0] and moves[0][0] < 0 and moves[2][0] < 0  # r and b: one vertical, left
+    family = Family(repaired(1), family_kinds(spec))
+    assert all(end in {e for e, _ in family.legs(state, i)} for i, end in moves.items())
+    after = tuple((p[0] + moves[i][0], p[1] + moves[i][1]) if i in moves else p for i, p in enumerate(state))
+    assert disconnection(state, after, family.model) is not None
+
+
+@pytest.mark.slow
+def test_a_corner_collision_pair_at_q2_is_proved_once_the_needed_robot_is_named():
+    """At q = 2 the plain obligation has an answer (two robots that do not see each other) that is no
+    swarm; with the robot below the top-corner named, unsat."""
+    spec = _spec("no-collision/leg-top.and.top-corner@q2", frozenset({"corner"}), 2)
+    got = prove_whatif(repaired(2), spec, timeout=120, out=None)
+    assert got.verdict is Verdict.PROVED and "named" in got.reason, got.reason
