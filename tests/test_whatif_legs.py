@@ -168,13 +168,14 @@ def test_fatline_prove_with_writes_its_own_rows(tmp_path, capsys):
 @pytest.mark.parametrize(
     "argv, word",
     [
-        (["--with", "diagonal"], "with='diagonal'"),
-        (["--q", "2"], "q=2"),
-        (["--with", "left", "--lemma", "approach"], "lemma=approach"),
+        (["repaired", "--with", "diagonal"], "with='diagonal'"),
+        (["repaired", "--q", "2"], "q=2"),
+        (["repaired", "--with", "left", "--lemma", "approach"], "lemma=approach"),
+        (["paper", "--with", "left"], "model='paper'"),
     ],
 )
 def test_bad_what_if_input_is_one_line_and_exit_2(argv, word, tmp_path, capsys):
-    code = main(["prove", "repaired", *argv, "--out", str(tmp_path)])
+    code = main(["prove", *argv, "--out", str(tmp_path)])
     err = capsys.readouterr().err
     assert code == 2 and word in err and len(err.strip().splitlines()) == 1, err
     assert not any(tmp_path.iterdir())
