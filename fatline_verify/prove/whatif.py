@@ -32,7 +32,7 @@ from ..rules.paper.algorithm import ORIGIN, Decision, Rule
 from ..rules.repaired.options import RepairProgress
 from ..schedulers.round import closest_dist2, collides, disconnection, lost_edges, play_round, snapshot
 from .search import Budget, rounds, rounds_text
-from .smt.whatif import BRIDGES, REST, VERTICAL_BRIDGE, WhatIfSpec, argument, arith, build
+from .smt.whatif import BRIDGES, KEPT, REST, VERTICAL_BRIDGE, WhatIfSpec, argument, arith, build
 
 VACUITY_SHARE = 0.05
 PROVED_ON = "unsat on the lattice q = {q}: holds for swarms of every size on it (the header's argument)"
@@ -170,6 +170,10 @@ def replay_whatif(
         return (Verdict.INCONCLUSIVE, f"the legs' conditions admit a violation at {shown}, but there r's edge test "
                 "for o passes by keeping it, or b is not a bridge by the family's own test: not a counterexample",
                 state, moves)  # fmt: skip
+    if spec.form == KEPT and not all(_kept(fm, state, i, end, 1 - i) for i, end in moves):
+        return (Verdict.INCONCLUSIVE, f"the legs' conditions admit a violation at {shown}, but there a mover's "
+                "edge test for the other does not keep the edge (it is bridged): not a counterexample",
+                state, moves)  # fmt: skip
     ends = dict(moves)
     after = tuple((p[0] + ends[i][0], p[1] + ends[i][1]) if i in ends else p for i, p in enumerate(state))
     if spec.lemma is Lemma.NO_COLLISION:
@@ -197,6 +201,15 @@ def replay_whatif(
         state,
         moves,
     )
+
+
+def _kept(model: Model, state: tuple[Point, ...], i: int, end: Point, j: int) -> bool:
+    """Whether robot ``i``'s edge test for robot ``j`` passes by keeping it (``repairs._edge_kept``'s first
+    test, ``_wherever``), its leg to ``end``."""
+    from ..rules.repaired.algorithm import _wherever
+
+    c = _minus(state[j], state[i])
+    return all(model.sees(_d2(p, end)) for p in _wherever(c, end, True, model.radius))
 
 
 def _bridge_used(model: Model, state: tuple[Point, ...], end: Point, vertical: bool) -> bool:
