@@ -18,7 +18,7 @@ from fatline_verify.prove.smt import whatif as w
 from fatline_verify.prove.smt.cases import Arith, Pt
 from fatline_verify.prove.whatif import family_kinds, prove_whatif
 from fatline_verify.repair.reach import Family, Kind
-from fatline_verify.schedulers.round import disconnection, lost_edges, snapshot
+from fatline_verify.schedulers.round import closest_dist2, collides, disconnection, lost_edges, snapshot
 from tests.test_repairs import repaired, swarms
 
 
@@ -209,3 +209,20 @@ def test_a_corner_collision_pair_at_q2_is_proved_once_the_needed_robot_is_named(
     spec = _spec("no-collision/leg-top.and.top-corner@q2", frozenset({"corner"}), 2)
     got = prove_whatif(repaired(2), spec, timeout=120, out=None)
     assert got.verdict is Verdict.PROVED and "named" in got.reason, got.reason
+
+
+@pytest.mark.slow
+def test_a_left_leg_and_a_corner_leg_collide_at_q2():
+    """Two robots that do not see each other, one stepping left, one right and down: they collide
+    (q = 2, left and corner legs both), replayed through the family and the executable model."""
+    kinds = frozenset({"left", "corner"})
+    spec = _spec("no-collision/leg-left.and.top-corner@q2", kinds, 2)
+    model = repaired(2)
+    got = prove_whatif(model, spec, timeout=120, out=None)
+    assert got.verdict is Verdict.VIOLATED, got.reason
+    state, moves = got.state, dict(got.moves)
+    family = Family(model, family_kinds(spec))
+    assert all(end in {e for e, _ in family.legs(state, i)} for i, end in moves.items())
+    paths = {i: (state[i], (state[i][0] + e[0], state[i][1] + e[1])) for i, e in moves.items()}
+    assert collides(closest_dist2(paths[0], paths[1], state[0], state[1], family.model), family.model)
+    assert not family.model.sees((state[0][0] - state[1][0]) ** 2 + (state[0][1] - state[1][1]) ** 2)
