@@ -325,22 +325,28 @@ def check_robots(
     return stats, results
 
 
-def kernels_cached(engine: str) -> bool:
-    """Whether the numba kernels a search with ``engine`` runs are compiled in this process or cached
-    on disk for this source (so no compile comes first); ``True`` where numba cannot tell."""
-    from . import compiled, hashtable, initial
+def kernels_cached(engine: str, family: str = "rounds") -> bool:
+    """Whether the numba kernels a search with ``engine`` over a system of ``family`` runs are compiled
+    in this process or cached on disk for this source (so no compile comes first); ``True`` where
+    numba cannot tell."""
+    from . import compiled, compiled_async, hashtable, initial, keys
 
-    modules = [initial, hashtable, compiled] if engine == "compiled" else [initial]
+    kernels: list[Any] = list(vars(initial).values())
+    if engine == "compiled":
+        kernels += [*vars(hashtable).values(), *vars(compiled).values(), keys.snapshot_key]
+        if family == "async":
+            kernels += list(vars(compiled_async).values())
+    if family == "async":  # keys past 63 bits (n >= 4 in 9x9), whatever the engine
+        kernels += [keys._argsort, keys._bisect, keys._walk, keys._ascending]
     try:
-        for module in modules:
-            for value in vars(module).values():
-                cache = getattr(value, "_cache", None)
-                if not hasattr(value, "signatures") or cache is None or value.signatures:
-                    continue
-                if getattr(value, "targetoptions", {}).get("inline") == "always":
-                    continue  # compiled into its callers only
-                if not cache._cache_file._load_index():
-                    return False
+        for value in kernels:
+            cache = getattr(value, "_cache", None)
+            if not hasattr(value, "signatures") or cache is None or value.signatures:
+                continue
+            if getattr(value, "targetoptions", {}).get("inline") == "always":
+                continue  # compiled into its callers only
+            if not cache._cache_file._load_index():
+                return False
     except Exception:  # numba's cache layout is not an API: no message rather than a wrong one
         return True
     return True
@@ -354,7 +360,7 @@ def explore_robots(
     bound = plan.bound or window
     system = system_for(model)
     codec = system.codec(n, bound)
-    compiling = progress is not None and not kernels_cached(plan.engine)
+    compiling = progress is not None and not kernels_cached(plan.engine, system.family)
     if progress:
         # A first run compiles the numba kernels (seconds to a minute, once: they are cached); a stage
         # that says so stands until the first level's first batch, which the compile precedes.
