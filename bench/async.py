@@ -22,7 +22,7 @@ import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from scale import run_measured  # noqa: E402
+from scale import run_measured
 
 ROOT = Path(__file__).resolve().parent.parent
 

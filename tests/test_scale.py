@@ -127,7 +127,9 @@ def test_a_system_without_an_engine_refuses_it():
     from fatline_verify.model.options import Scheduler
 
     other = SimpleNamespace(family="other", kind=Scheduler.ASYNC)
-    with pytest.raises(InvalidInput, match="engine='compiled': scheduler=async has no compiled engine; expected scalar"):
+    with pytest.raises(
+        InvalidInput, match="engine='compiled': scheduler=async has no compiled engine; expected scalar"
+    ):
         engine_for(other, "compiled")  # type: ignore[arg-type]
 
 

@@ -28,7 +28,6 @@ whole to the fast engine, which gives the same answer.
 
 from __future__ import annotations
 
-from math import isqrt
 from typing import Any
 
 import numpy as np
@@ -391,7 +390,8 @@ class CompiledAsyncEngine:
         if err:
             half = 1 << (_SWEEP_BITS - 1)
             raise ValueError(
-                f"a move or offset exceeds {half - 1} units of 1/{self.K}; the fast engine packs {_SWEEP_BITS} bits each"
+                f"a move or offset exceeds {half - 1} units of 1/{self.K}; "
+                f"the fast engine packs {_SWEEP_BITS} bits each"
             )
         return pos, dec, hit, status, miss_snap[:n_snap], miss_sweep[:n_sweep]
 
@@ -466,10 +466,7 @@ class CompiledAsyncEngine:
             words = np.ascontiguousarray(keys).view(">u8").reshape(m, codec.words).astype(np.int64)
         states = _decode(words, codec.n, codec.bits, codec.per_word, self.K, codec.wf, codec.hf)
         enabled, goal, src, action, flags, exact, _, succ, fits = self._run(states, codec)
-        if codec.words == 1:
-            key = succ[:, 0]
-        else:
-            key = succ.astype(">u8").view(codec.dtype).ravel()
+        key = succ[:, 0] if codec.words == 1 else succ.astype(">u8").view(codec.dtype).ravel()
         return KeyExpansion(enabled, goal, src, action, key, flags, fits, exact)
 
 

@@ -17,9 +17,7 @@ from numba import njit
 
 
 @njit(cache=True)
-def snapshot_key(
-    pos: np.ndarray, i: int, view2: int, reach: int, side: int, cell_bits: int, codes: np.ndarray
-) -> int:
+def snapshot_key(pos: np.ndarray, i: int, view2: int, reach: int, side: int, cell_bits: int, codes: np.ndarray) -> int:
     """Robot ``i``'s snapshot key among the positions ``pos`` ``(n, 2)`` (``codes``: scratch of at
     least ``n - 1`` int64). The caller checks ``cell_bits * (n - 1) <= 63``."""
     n = pos.shape[0]
@@ -42,9 +40,6 @@ def snapshot_key(
     for k in range(n - 1):
         key = (key << cell_bits) | (codes[k] if k < c else sentinel)
     return key
-
-
-
 
 
 # --- sets of multi-word keys ----------------------------------------------------------------------
@@ -134,10 +129,11 @@ def _argsort(w: np.ndarray) -> np.ndarray:
 
 @njit(cache=True)
 def _ascending(w: np.ndarray, sw: bool) -> bool:
-    for r in range(1, w.shape[0]):
-        if _cmp(w, r - 1, sw, w, r, sw) > 0:
-            return False
-    return True
+    """Whether the rows of ``w`` are in ascending order."""
+    r = 1
+    while r < w.shape[0] and _cmp(w, r - 1, sw, w, r, sw) <= 0:
+        r += 1
+    return r >= w.shape[0]
 
 
 @njit(cache=True)
