@@ -27,6 +27,15 @@ from scale import run_measured
 ROOT = Path(__file__).resolve().parent.parent
 
 
+def _unnamed(data: object) -> object:
+    """``data`` with every ``engine`` field blanked (a witness names the engine that found it)."""
+    if isinstance(data, dict):
+        return {k: "" if k == "engine" else _unnamed(v) for k, v in data.items()}
+    if isinstance(data, list):
+        return [_unnamed(v) for v in data]
+    return data
+
+
 def fatline(n: int, engine: str, workdir: Path, max_memory: str, window: str) -> dict[str, object]:
     out = workdir / f"n{n}-{engine}.json"
     cmd = [sys.executable, "-m", "fatline_verify.cli", "check", "paper-async", "--robots", str(n)]
@@ -37,6 +46,9 @@ def fatline(n: int, engine: str, workdir: Path, max_memory: str, window: str) ->
     search = data["searches"][0]
     for s in data["searches"]:
         s["seconds"], s["engine"] = 0, ""
+    for row in data["lemmas"]:  # the witness itself, not where this run wrote it
+        if row.get("trace"):
+            row["trace"] = _unnamed(json.loads(Path(row["trace"]).read_text()))
     return {
         "initial": search["initial"],
         "states": search["states"],

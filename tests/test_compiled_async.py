@@ -103,15 +103,20 @@ def test_compiled_async_gives_the_fast_engines_check_json_byte_for_byte():
     model = load_model("paper-async")
 
     def data(engine: str) -> str:
-        out = check_to_json(check(model, (2, 4), (7, 7), engine=engine), {})
+        result = check(model, (2, 4), (7, 7), engine=engine)
+        out = check_to_json(result, {})
         for s in out["searches"]:
             assert s["engine"] == engine
             s["seconds"], s["engine"] = 0, ""
-        return json.dumps(out, sort_keys=True)
+        witnesses = [r.witness for r in result.results if r.witness is not None]
+        for w in witnesses:
+            assert w["origin"]["engine"] == engine
+            w["origin"]["engine"] = ""
+        return json.dumps([out, witnesses], sort_keys=True)
 
     compiled = data("compiled")
     assert compiled == data("fast")
-    assert '"VIOLATED"' in compiled
+    assert '"VIOLATED"' in compiled and '"origin"' in compiled
 
 
 def test_compiled_is_the_async_default_engine():
