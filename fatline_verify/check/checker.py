@@ -30,6 +30,7 @@ from ..resources import default_max_memory, format_size, machine_memory
 from ..schedulers.base import ENGINES, unknown_engine
 from ..schedulers.systems import system_for
 from ..trace.traces import approach_stuck
+from . import keys as keyset
 from .checkpoint import claim_checkpoint
 from .engines import engine_for
 from .initial import initial_array, initial_keys
@@ -297,7 +298,7 @@ def initial_keys_for(system: Any, n: int, window: tuple[int, int], codec: Any) -
     if system.fields == 2 and isinstance(codec, KeyCodec):
         return initial_keys(n, window, model, codec)
     states = initial_array(n, window, model)
-    return np.sort(codec.encode(system.initial(states))) if len(states) else np.zeros(0, dtype=codec.dtype)
+    return keyset.sort(codec.encode(system.initial(states))) if len(states) else np.zeros(0, dtype=codec.dtype)
 
 
 def check_robots(
