@@ -332,11 +332,17 @@ def kernels_cached(engine: str, family: str = "rounds") -> bool:
     numba cannot tell."""
     from . import compiled, compiled_async, hashtable, initial, keys
 
-    kernels: list[Any] = list(vars(initial).values())
+    def own(module: Any) -> list[Any]:
+        """The module's own kernels (one imported from another is compiled into its callers there)."""
+        return [
+            v
+            for v in vars(module).values()
+            if getattr(getattr(v, "py_func", None), "__module__", None) == module.__name__
+        ]
+
+    kernels = own(initial)
     if engine == "compiled":
-        kernels += [*vars(hashtable).values(), *vars(compiled).values(), keys.snapshot_key]
-        if family == "async":
-            kernels += list(vars(compiled_async).values())
+        kernels += own(hashtable) + own(compiled) + (own(compiled_async) if family == "async" else [])
     if family == "async":  # keys past 63 bits (n >= 4 in 9x9), whatever the engine
         kernels += [keys._argsort, keys._bisect, keys._walk, keys._ascending]
     try:
