@@ -99,11 +99,12 @@ def test_expand_and_expand_keys_equal_fast_on_reachable_states(K, readings):
     assert off_lattice > 0
 
 
-def test_compiled_async_gives_the_fast_engines_check_json_byte_for_byte():
+@pytest.mark.parametrize(("other", "robots"), [("fast", (2, 4)), ("scalar", (2, 3))])
+def test_compiled_async_gives_the_other_engines_check_json_byte_for_byte(other, robots):
     model = load_model("paper-async")
 
     def data(engine: str) -> str:
-        result = check(model, (2, 4), (7, 7), engine=engine)
+        result = check(model, robots, (7, 7), engine=engine)
         out = check_to_json(result, {})
         for s in out["searches"]:
             assert s["engine"] == engine
@@ -115,7 +116,7 @@ def test_compiled_async_gives_the_fast_engines_check_json_byte_for_byte():
         return json.dumps([out, witnesses], sort_keys=True)
 
     compiled = data("compiled")
-    assert compiled == data("fast")
+    assert compiled == data(other)
     assert '"VIOLATED"' in compiled and '"origin"' in compiled
 
 
