@@ -38,10 +38,11 @@ def _unnamed(data: object) -> object:
 
 def fatline(n: int, engine: str, workdir: Path, max_memory: str, window: str) -> dict[str, object]:
     out = workdir / f"n{n}-{engine}.json"
-    cmd = [sys.executable, "-m", "fatline_verify.cli", "check", "paper-async", "--robots", str(n)]
+    cmd = [sys.executable, "-m", "fatline_verify.cli", "check", str(ROOT / "models" / "paper-async.toml")]
+    cmd += ["--robots", str(n)]
     cmd += ["--window", window, "--engine", engine, "--max-states", "400000000", "--max-memory", max_memory]
     cmd += ["--json", str(out), "--traces", str(workdir / f"traces-{engine}"), "--force", "-q"]
-    wall, peak, _ = run_measured(cmd, ROOT)
+    wall, peak, _ = run_measured(cmd, workdir)
     data = json.loads(out.read_text())
     search = data["searches"][0]
     for s in data["searches"]:
