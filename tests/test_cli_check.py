@@ -55,7 +55,7 @@ def test_a_first_run_says_it_is_compiling_the_kernels_not_0_states(monkeypatch):
     checker.explore_robots(plan, 2, None, lambda label, done, total, note: seen.append((label, done, total)))
     assert checker.kernels_cached(plan.engine)  # they are now, whatever they were before
     assert seen[0] == ("n=2: enumerating initial configurations in 7x7", 0, 0)
-    monkeypatch.setattr(checker, "kernels_cached", lambda engine: False)
+    monkeypatch.setattr(checker, "kernels_cached", lambda engine, family="rounds": False)
     seen.clear()
     checker.explore_robots(plan, 2, None, lambda label, done, total, note: seen.append((label, done, total)))
     assert seen[0] == ("n=2: compiling kernels, first run only", 0, 0)

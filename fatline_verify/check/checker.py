@@ -30,6 +30,7 @@ from ..resources import default_max_memory, format_size, machine_memory
 from ..schedulers.base import ENGINES, unknown_engine
 from ..schedulers.systems import system_for
 from ..trace.traces import approach_stuck
+from . import keys as keyset
 from .checkpoint import claim_checkpoint
 from .engines import engine_for
 from .initial import initial_array, initial_keys
@@ -297,7 +298,7 @@ def initial_keys_for(system: Any, n: int, window: tuple[int, int], codec: Any) -
     if system.fields == 2 and isinstance(codec, KeyCodec):
         return initial_keys(n, window, model, codec)
     states = initial_array(n, window, model)
-    return np.sort(codec.encode(system.initial(states))) if len(states) else np.zeros(0, dtype=codec.dtype)
+    return keyset.sort(codec.encode(system.initial(states))) if len(states) else np.zeros(0, dtype=codec.dtype)
 
 
 def check_robots(
@@ -325,22 +326,34 @@ def check_robots(
     return stats, results
 
 
-def kernels_cached(engine: str) -> bool:
-    """Whether the numba kernels a search with ``engine`` runs are compiled in this process or cached
-    on disk for this source (so no compile comes first); ``True`` where numba cannot tell."""
-    from . import compiled, hashtable, initial
+def kernels_cached(engine: str, family: str = "rounds") -> bool:
+    """Whether the numba kernels a search with ``engine`` over a system of ``family`` runs are compiled
+    in this process or cached on disk for this source (so no compile comes first); ``True`` where
+    numba cannot tell."""
+    from . import compiled, compiled_async, hashtable, initial, keys
 
-    modules = [initial, hashtable, compiled] if engine == "compiled" else [initial]
+    def own(module: Any) -> list[Any]:
+        """The module's own kernels (one imported from another is compiled into its callers there)."""
+        return [
+            v
+            for v in vars(module).values()
+            if getattr(getattr(v, "py_func", None), "__module__", None) == module.__name__
+        ]
+
+    kernels = own(initial)
+    if engine == "compiled":
+        kernels += own(hashtable) + own(compiled) + (own(compiled_async) if family == "async" else [])
+    if family == "async":  # keys past 63 bits (n >= 4 in 9x9), whatever the engine
+        kernels += [keys._argsort, keys._bisect, keys._walk, keys._ascending]
     try:
-        for module in modules:
-            for value in vars(module).values():
-                cache = getattr(value, "_cache", None)
-                if not hasattr(value, "signatures") or cache is None or value.signatures:
-                    continue
-                if getattr(value, "targetoptions", {}).get("inline") == "always":
-                    continue  # compiled into its callers only
-                if not cache._cache_file._load_index():
-                    return False
+        for value in kernels:
+            cache = getattr(value, "_cache", None)
+            if not hasattr(value, "signatures") or cache is None or value.signatures:
+                continue
+            if getattr(value, "targetoptions", {}).get("inline") == "always":
+                continue  # compiled into its callers only
+            if not cache._cache_file._load_index():
+                return False
     except Exception:  # numba's cache layout is not an API: no message rather than a wrong one
         return True
     return True
@@ -354,7 +367,7 @@ def explore_robots(
     bound = plan.bound or window
     system = system_for(model)
     codec = system.codec(n, bound)
-    compiling = progress is not None and not kernels_cached(plan.engine)
+    compiling = progress is not None and not kernels_cached(plan.engine, system.family)
     if progress:
         # A first run compiles the numba kernels (seconds to a minute, once: they are cached); a stage
         # that says so stands until the first level's first batch, which the compile precedes.

@@ -46,6 +46,7 @@ from ..rules.registry import decider
 from ..schedulers.base import Expansion, KeyExpansion
 from .fast import pair_collides, snapshot_cells
 from .hashtable import HashTable, distinct, find
+from .keys import snapshot_key
 
 _CORNER_NONE, _CORNER_H, _CORNER_V = 0, 1, 2
 _GOALS = {Goal.VERTICAL_LINE: 0, Goal.ANY_LINE: 1, Goal.LINE_MEETS_DISCS: 2}
@@ -186,30 +187,13 @@ def _analyse(
     exceeds the 8-bit packing (else 0)."""
     m, n = states.shape[0], states.shape[1]
     n_pairs = len(pi)
-    sentinel = side * side
     codes = np.empty(max(n - 1, 1), dtype=np.int64)
     nbrs = np.empty(n, dtype=np.int64)
     n_snap, n_pair, err = 0, 0, 0
     for s in range(m):
         st = 0
         for i in range(n):
-            c = 0
-            for j in range(n):
-                if j == i:
-                    continue
-                dx = states[s, j, 0] - states[s, i, 0]
-                dy = states[s, j, 1] - states[s, i, 1]
-                if dx * dx + dy * dy <= view2:
-                    code = (dx + reach) * side + dy + reach
-                    k = c
-                    while k > 0 and codes[k - 1] > code:
-                        codes[k] = codes[k - 1]
-                        k -= 1
-                    codes[k] = code
-                    c += 1
-            key = 0
-            for k in range(n - 1):
-                key = (key << cell_bits) | (codes[k] if k < c else sentinel)
+            key = snapshot_key(states[s], i, view2, reach, side, cell_bits, codes)
             slot = find(dtab, dshift, key)
             if slot < 0:
                 miss_snap[n_snap] = key

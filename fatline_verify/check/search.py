@@ -30,6 +30,7 @@ from ..lemmas.registry import CORE_FLAGS
 from ..model.config import Model
 from ..resources import BYTES_PER_STATE, PEAK_FACTOR
 from ..schedulers.base import Codec, Engine, TransitionSystem
+from . import keys as keyset
 from .engines import engine_for
 from .shard import COLUMNS, Level, Shard, followed, owners
 
@@ -407,8 +408,8 @@ def _build(
     # Only the transitions the search follows have a destination id (a violating one's is -1 under "stop").
     wanted = np.nonzero(followed(edge_fits, edge_flags, after_violation))[0]
     looked = take("key", codec.dtype)
-    by_key = np.argsort(all_keys, kind="stable")
-    pos = np.minimum(np.searchsorted(all_keys[by_key], looked), total - 1)
+    by_key = keyset.argsort(all_keys)
+    pos = np.minimum(keyset.searchsorted(all_keys[by_key], looked), total - 1)
     hit = all_keys[by_key[pos]] == looked
     dst = np.full(len(edge_fits), -1, dtype=id_type)
     dst[wanted[hit]] = by_key[pos[hit]]

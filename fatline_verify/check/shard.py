@@ -21,6 +21,7 @@ from ..lemmas.registry import CORE_FLAGS, extra_flags, registered
 from ..model.config import Model
 from ..schedulers.base import Engine, TransitionSystem, expand_keys
 from ..schedulers.systems import system_for
+from . import keys as keyset
 from .engines import engine_for
 
 _MIX = np.uint64(0x9E3779B97F4A7C15)
@@ -124,7 +125,7 @@ class Shard:
         _in_action_order(col, self.after_violation)
         follow = followed(col["fits"], col["flags"], self.after_violation)
         # Transitions are generated in (source id, action) order, so a key's first occurrence is its least.
-        ck, first = np.unique(col["key"], return_index=True)
+        ck, first = keyset.unique_first(col["key"])
         cs, ca = col["src"][follow][first], col["action"][follow][first]
         owner = owners(ck, self.count)
         routed = [(ck[owner == o], cs[owner == o].astype(np.int64), ca[owner == o]) for o in range(self.count)]
@@ -153,11 +154,10 @@ class Shard:
             first[1:] = ck[1:] != ck[:-1]
             ck, cs, ca = ck[first], cs[first], ca[first]
         if len(self.visited) and len(ck):
-            pos = np.minimum(np.searchsorted(self.visited, ck), len(self.visited) - 1)
+            pos = np.minimum(keyset.searchsorted(self.visited, ck), len(self.visited) - 1)
             new = self.visited[pos] != ck
             ck, cs, ca = ck[new], cs[new], ca[new]
-        merged = np.concatenate([self.visited, ck])
-        self.visited = np.sort(merged, kind="stable" if merged.dtype == np.int64 else None)  # two sorted runs
+        self.visited = keyset.merge_sorted(self.visited, ck)  # two sorted runs
         self.frontier = ck
         return ck, cs, ca
 
