@@ -123,14 +123,22 @@ class Equivalence:
 
     same: np.ndarray
     replays: int
+    peak: int = 0
+    """The most bytes a spread closure's sets of combinations held (0: not a spread)."""
 
 
 def same_exploration(
-    space: Space, among: np.ndarray, reference: Model, explored: list[Explored], lemma: Lemma
+    space: Space,
+    among: np.ndarray,
+    reference: Model,
+    explored: list[Explored],
+    lemma: Lemma,
+    tick: Callable[[int], None] | None = None,
 ) -> Equivalence:
     """Of ``among`` (a mask over ``space``), the combinations whose continued (or stopped) graph at the
     same bounds ``lemma`` sees as the reference model's, robot count by robot count (see the module
-    docstring); ``explored``: the reference's explorations, all continued or all stopped."""
+    docstring); ``explored``: the reference's explorations, all continued or all stopped; ``tick`` hears
+    the replays so far."""
     same = among.copy()
     replays = 0
     for ex in explored:
@@ -145,5 +153,7 @@ def same_exploration(
                 return Equivalence(same, replays)
             judged = cover(space, same, partial(_same, signature, signature(reference)))
             replays += judged.replays + 1
+            if tick is not None:
+                tick(replays)
             same &= judged.refuted
     return Equivalence(same, replays)
