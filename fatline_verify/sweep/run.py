@@ -298,14 +298,15 @@ class Sweep:
         deadline: float | None = None,
     ) -> bool:
         """Check and close, step by step, until nothing is open (``True``), ``max_checks`` more checks
-        were picked, or the clock (``time.monotonic()``) passed ``deadline`` between two steps (each
-        check closes at least one step first, so every run gets on). Checks run ``workers`` at a time on
+        were picked, or the clock (``time.monotonic()``) passed ``deadline`` between two steps (a run
+        makes one step at least, and each check closes one step at least: every run gets on). Checks run ``workers`` at a time on
         a local Dask cluster, or on the Dask scheduler at ``cluster``; closing runs here, and every step
         is saved before the next. ``progress`` hears one line per change."""
         left = max_checks
+        steps = 0
 
-        def late() -> bool:
-            return deadline is not None and time.monotonic() >= deadline
+        def late() -> bool:  # never before the first step: every run gets on
+            return steps > 0 and deadline is not None and time.monotonic() >= deadline
 
         with contextlib.ExitStack() as stack:
             dask: Any = None
@@ -336,6 +337,7 @@ class Sweep:
                         lines = self.absorb_lemma(found, lemma)
                         self.absorbed.append(lemma)
                         self.save()
+                        steps += 1
                         for line in lines if progress else ():
                             progress(line)  # type: ignore[misc]
                     self._record(found)
