@@ -108,7 +108,8 @@ def _run(args: argparse.Namespace, name: str, sweep: Any, max_time: float | None
     lines = [*sweep_lines(sweep), f"report page: {page_files(sweep.out)[0]}"]
     timed_out = deadline is not None and time.monotonic() >= deadline and sweep.open_count() > 0
     if interrupted:
-        lines.append(f"INTERRUPTED: {len(sweep.checks)} checks finished and saved in {sweep.json_path}; "
+        under_way = f" and {len(sweep.absorbed)} lemmas closed from the next" if sweep.absorbed else ""
+        lines.append(f"INTERRUPTED: {len(sweep.checks)} checks{under_way} finished and saved in {sweep.json_path}; "
                      "the same command resumes")  # fmt: skip
     elif timed_out:
         lines.append(f"stopped after --max-time {args.max_time}: {len(sweep.checks)} checks saved in "

@@ -190,6 +190,7 @@ def within_known(
     lemma: Lemma = Lemma.PROGRESS,
     budget: int = 0,
     tick: Callable[[int], None] | None = None,
+    work: int = 0,
 ) -> Equivalence:
     """Of ``among`` (a mask over ``space``), the combinations under which ``progress`` holds because
     every state their own search reaches is one of ``known`` (the states earlier checks expanded, per
@@ -220,8 +221,12 @@ def within_known(
 
     ``budget`` > 0: the bytes the spread's sets of combinations may hold (per state a bit per
     combination, and the combinations not yet passed on); combinations that would pass it are dropped
-    like those that leave what is known: fewer closed, none closed wrongly. ``tick`` hears the states
-    passed on so far."""
+    like those that leave what is known: fewer closed, none closed wrongly. ``work`` > 0: per robot
+    count, the answers (a state's expansion under a class of combinations) the spread may use; past
+    them it stops, and every combination whose search is not finished (some state it reached not yet
+    passed on) is dropped. Both bounds are counted the same however much ``memo`` remembers, so a run
+    with an empty memo closes what one with a full memo closes. ``tick`` hears the states passed on
+    so far."""
     before = memo.replays
     alive = among.copy()
     done = peak = 0
@@ -236,19 +241,25 @@ def within_known(
             budget,
         )
         initial = memo.answers(("initial", *where, trap.window), partial(_initial, trap), spread.ids)
+        answered = 0
         for inside, keys in list(initial):
+            answered += 1
             for key in keys:
                 spread.add(key.tobytes(), spread.positions(inside))
         dtype = trap.states.dtype
         while spread.pending:
+            if work and answered >= work:
+                spread.abandon()  # out of work: what is not finished is not judged here
+                break
             key, delta = spread.pop()
             done += 1
-            if tick is not None and done % 64 == 0:
+            if tick is not None:
                 tick(done)
             if not len(delta):
                 continue
             compute = partial(_step, trap, np.frombuffer(key, dtype=dtype).copy())
             for inside, step in list(memo.answers(("step", *where, key), compute, delta)):
+                answered += 1
                 if _broken(lemma, step):
                     alive[inside] = False  # a deadlock, or a violating transition
                     continue
@@ -274,6 +285,7 @@ def spread_termination(
     grow: int,
     budget: int = 0,
     tick: Callable[[int], None] | None = None,
+    work: int = 0,
 ) -> Equivalence:
     """Of ``among``, the combinations under which ``termination`` holds because no transition of their
     own search lies on a cycle of *any* of their searches.
@@ -284,16 +296,16 @@ def spread_termination(
     component's place). Then :func:`within_known` with those ranks keeps the combinations whose every
     followed transition out of a non-goal state goes strictly up, nothing escaping and no deadlock:
     such a search never takes a transition inside a component of U, so its non-goal graph (a
-    subgraph of U) has no cycle, fair or not, and the checker finds termination holding. ``budget`` and
-    ``tick``: as for :func:`within_known`, each pass."""
+    subgraph of U) has no cycle, fair or not, and the checker finds termination holding. ``budget``,
+    ``work`` and ``tick``: as for :func:`within_known`, each pass."""
     union = Ranks()
-    first = within_known(space, among, known, memo, grow=grow, taken=union, budget=budget, tick=tick)
+    first = within_known(space, among, known, memo, grow=grow, taken=union, budget=budget, tick=tick, work=work)
     ranked = [
         Trap(t.n, t.bound, t.window, np.union1d(t.states, union.states(t.n, t.bound, t.window, t.states.dtype)))
         for t in known
     ]
     second = within_known(
-        space, among & first.same, ranked, memo, union.by_components(), budget=budget, tick=tick
+        space, among & first.same, ranked, memo, union.by_components(), budget=budget, tick=tick, work=work
     )
     return Equivalence(second.same, first.replays + second.replays, max(first.peak, second.peak))
 
@@ -414,17 +426,24 @@ class _Spread:
                 self.grow -= 1
             mask = self.reach[key] = np.zeros(size, dtype=np.uint8)
             self.used += size
-        shift = (positions & 7).astype(np.uint8)
-        new = positions[((mask[positions >> 3] >> shift) & 1) == 0]
+        new = positions[~_bits(mask, positions, len(self.ids))]
         if not len(new):
             return
         if not self._fits(4 * len(new)):
             self._drop(new)
             return
-        np.bitwise_or.at(mask, new >> 3, np.left_shift(1, new & 7).astype(np.uint8))
+        _set_bits(mask, new, len(self.ids))
         self.pending.setdefault(key, []).append(new.astype(np.int32))
         self.used += 4 * len(new)
         self.peak = max(self.peak, self.used)
+
+    def abandon(self) -> None:
+        """Drop every combination not yet passed on from some state (its search is not finished)."""
+        for parts in self.pending.values():
+            for part in parts:
+                self._drop(part)
+        self.pending.clear()
+        self.used = 0
 
     def pop(self) -> tuple[bytes, np.ndarray]:
         """A state with combinations not yet passed on, and those still judged (numbers, sorted)."""
@@ -432,3 +451,25 @@ class _Spread:
         self.used -= sum(4 * len(p) for p in parts)
         combos = self.ids[np.sort(np.concatenate(parts))]
         return key, combos[self.alive[combos]]
+
+
+SPARSE = 256
+"""Positions fewer than one in this many of the bits: read and set them one by one; more: unpack the
+whole mask once (a bit operation per position costs about as much as unpacking this many bits)."""
+
+
+def _bits(mask: np.ndarray, positions: np.ndarray, n: int) -> np.ndarray:
+    """The bits at ``positions`` of the packed ``mask`` of ``n`` bits (little bit order), as booleans."""
+    if len(positions) * SPARSE < n:
+        return ((mask[positions >> 3] >> (positions & 7).astype(np.uint8)) & 1).astype(bool)
+    return np.unpackbits(mask, count=n, bitorder="little").view(bool)[positions]
+
+
+def _set_bits(mask: np.ndarray, positions: np.ndarray, n: int) -> None:
+    """Set the bits at ``positions`` (each once) of the packed ``mask`` of ``n`` bits."""
+    if len(positions) * SPARSE < n:
+        np.bitwise_or.at(mask, positions >> 3, np.left_shift(1, positions & 7).astype(np.uint8))
+        return
+    bits = np.unpackbits(mask, count=n, bitorder="little").view(bool)
+    bits[positions] = True
+    mask[:] = np.packbits(bits, bitorder="little")

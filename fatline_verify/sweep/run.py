@@ -56,6 +56,11 @@ GROW = 200_000
 expanded, per robot count: the open readings' searches run together (:func:`within_known`) until they
 are done or this many new states were met."""
 
+WORK = 20_000
+"""Answers a spread closure may use per robot count (a state's expansion under one class of readings;
+about one replay each when nothing is remembered, so about a minute): past them the readings whose
+search is not finished stay open for a later check, and a step ends in minutes, not hours."""
+
 MEMO_SHARE = 4
 """The remembered answers may hold ``max_memory / MEMO_SHARE`` (then they are forgotten and replayed
 again as asked: the same answers, more replays)."""
@@ -72,15 +77,18 @@ class Doing:
     what: str = "starting"
     count: int = 0
     unit: str = ""
+    replays: Callable[[], int] | None = None
+    """The replays made so far, where they are not the unit counted (a spread's remembered answers)."""
 
-    def set(self, what: str, unit: str = "") -> None:
-        self.what, self.count, self.unit = what, 0, unit
+    def set(self, what: str, unit: str = "", replays: Callable[[], int] | None = None) -> None:
+        self.what, self.count, self.unit, self.replays = what, 0, unit, replays
 
     def tick(self, count: int) -> None:
         self.count = count
 
     def __str__(self) -> str:
-        return self.what + (f", {self.count:,} {self.unit}" if self.unit else "")
+        text = self.what + (f", {self.count:,} {self.unit}" if self.unit else "")
+        return text + (f", {self.replays():,} replays" if self.replays is not None else "")
 
 
 @dataclass
@@ -272,11 +280,18 @@ class Sweep:
             self.known[where] = np.union1d(ex.expanded if old is None else old, ex.expanded)
         known = [Trap(n, bound, window, keys) for (n, bound, window), keys in sorted(self.known.items())]
         budget = self.max_memory // SPREAD_SHARE
-        self.doing.set(f"check {len(self.checks) + 1}: closing {lemma.value} (spread)", "states spread")
+        start = self._memo.replays
+        self.doing.set(
+            f"check {len(self.checks) + 1}: closing {lemma.value} (spread)",
+            "states spread",
+            lambda: self._memo.replays - start,
+        )
         tick = self.doing.tick
         if lemma is not Lemma.TERMINATION:
-            return within_known(space, among, known, self._memo, grow=GROW, lemma=lemma, budget=budget, tick=tick)
-        shared = spread_termination(space, among, known, self._memo, GROW, budget=budget, tick=tick)
+            return within_known(
+                space, among, known, self._memo, grow=GROW, lemma=lemma, budget=budget, tick=tick, work=WORK
+            )
+        shared = spread_termination(space, among, known, self._memo, GROW, budget=budget, tick=tick, work=WORK)
         own = trapped(space, among & ~shared.same, reference, explored, lemma, self._memo)
         return Equivalence(shared.same | own.same, shared.replays + own.replays)
 
