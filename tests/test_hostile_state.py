@@ -327,8 +327,11 @@ TAMPERED: list[tuple[str, dict[str, str], Callable[[Path], None], list[str], str
     (
         "sweep-known-left-out-of-the-manifest-resealed",
         {"sw": "sw"},
-        lambda w: _json_edit(w / SW / "sweep.json", lambda d: d["files"].pop("known.npz") and d["files"].__setitem__(
-            "other.npz", d["files"]["status.npz"]), reseal=True),
+        lambda w: _json_edit(
+            w / SW / "sweep.json",
+            lambda d: d["files"].pop("known.npz") and d["files"].__setitem__("other.npz", d["files"]["status.npz"]),
+            reseal=True,
+        ),
         SWEEP_AGAIN,
         "malformed",
     ),

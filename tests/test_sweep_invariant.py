@@ -25,8 +25,7 @@ from fatline_verify.sweep.invariant import (
     within_known,
 )
 from fatline_verify.sweep.memo import Memo
-from fatline_verify.sweep.run import GROW
-from fatline_verify.sweep.run import SweepBounds, check_combo
+from fatline_verify.sweep.run import GROW, SweepBounds, check_combo
 from fatline_verify.sweep.space import Space
 
 VARY = ("visibility", "vacant", "contact", "goal")

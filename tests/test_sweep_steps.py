@@ -19,7 +19,6 @@ import pytest
 
 from fatline_verify.cli import main
 from fatline_verify.cli import sweep as sweep_cli
-from fatline_verify.lemmas.properties import Lemma
 from fatline_verify.model.config import load_model
 from fatline_verify.progress import Progress
 from fatline_verify.sweep.run import HOLDS, INCONCLUSIVE, REFUTED, Sweep, SweepBounds
@@ -167,3 +166,27 @@ def test_max_memory_reaches_the_checks_the_memo_and_the_spread(tmp_path):
         assert (tight.status[lemma][definite] == free.status[lemma][definite]).all(), lemma
         cut += int(((tight.status[lemma] == INCONCLUSIVE) & (free.status[lemma] != INCONCLUSIVE)).sum())
     assert cut > 0  # the checks' searches stopped at their share, INCONCLUSIVE as check says
+
+
+def test_a_graph_equality_closure_out_of_work_closes_nothing():
+    """``work``: past that many replays a graph-equality closure closes nothing (equality is known only
+    once every signature was judged); with room, it closes what the free closure closes."""
+    from fatline_verify.lemmas.properties import Verdict
+    from fatline_verify.sweep.check import check_combo
+    from fatline_verify.sweep.equivalent import same_exploration
+
+    space = Space(load_model("paper"), ("path", "timing", "contact", "goal"))
+    bounds = SweepBounds((2, 3), (6, 6))
+    for i in range(space.size):
+        found = check_combo(space.model(space.combo(i)), bounds, space.combo(i))
+        held = [
+            lemma for lemma, v in found.verdicts.items() if v is Verdict.HOLDS_WITHIN_BOUNDS and lemma in found.held
+        ]
+        if held:
+            break
+    reference, everything = space.model(space.combo(i)), np.ones(space.size, dtype=bool)
+    free = same_exploration(space, everything, reference, list(found.explored), held[0])
+    assert free.same.sum() > 1 and free.replays > 3
+    assert not same_exploration(space, everything, reference, list(found.explored), held[0], work=3).same.any()
+    roomy = same_exploration(space, everything, reference, list(found.explored), held[0], work=free.replays + 1)
+    assert (roomy.same == free.same).all()

@@ -17,6 +17,27 @@ Activity = Callable[[str], None]
 """What the sweep is doing now, as one short text (the progress layer shows it; the engine never prints)."""
 
 
+@dataclass
+class Doing:
+    """What the sweep is doing now (the progress layer reads it; the engine never prints)."""
+
+    what: str = "starting"
+    count: int = 0
+    unit: str = ""
+    replays: Callable[[], int] | None = None
+    """The replays made so far, where they are not the unit counted (a spread's remembered answers)."""
+
+    def set(self, what: str, unit: str = "", replays: Callable[[], int] | None = None) -> None:
+        self.what, self.count, self.unit, self.replays = what, 0, unit, replays
+
+    def tick(self, count: int) -> None:
+        self.count = count
+
+    def __str__(self) -> str:
+        text = self.what + (f", {self.count:,} {self.unit}" if self.unit else "")
+        return text + (f", {self.replays():,} replays" if self.replays is not None else "")
+
+
 @dataclass(frozen=True, slots=True)
 class SweepBounds:
     """The checker's bounds for every combination checked."""

@@ -23,7 +23,6 @@ from ..model.config import Model
 from .cover import Recorder
 from .space import Space
 
-
 NODE = 200
 """Bytes of one tree node, about (its object and its place in the parent's dict)."""
 

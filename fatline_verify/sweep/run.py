@@ -35,7 +35,7 @@ from ..lemmas.properties import CHECKED, Lemma, Verdict
 from ..model.config import model_to_mapping
 from ..outputs import write_json
 from . import state
-from .check import Found, SweepBounds, check_combo, check_job
+from .check import Doing, Found, SweepBounds, check_combo, check_job
 from .cover import cover, refutes
 from .equivalent import Equivalence, Explored, same_exploration
 from .invariant import SPREAD_SAFETY, TRAPPED, Trap, spread_termination, trapped, within_known
@@ -58,8 +58,9 @@ are done or this many new states were met."""
 
 WORK = 20_000
 """Answers a spread closure may use per robot count (a state's expansion under one class of readings;
-about one replay each when nothing is remembered, so about a minute): past them the readings whose
-search is not finished stay open for a later check, and a step ends in minutes, not hours."""
+about one replay each when nothing is remembered), and replays a graph-equality closure may make:
+past them the readings not yet shown alike stay open for a later check, and a step ends in minutes,
+not hours."""
 
 MEMO_SHARE = 4
 """The remembered answers may hold ``max_memory / MEMO_SHARE`` (then they are forgotten and replayed
@@ -68,27 +69,6 @@ SPREAD_SHARE = 4
 """A spread closure may hold ``max_memory / SPREAD_SHARE`` in its per-state sets of combinations."""
 CHECK_SHARE = 2
 """A check's search may hold ``max_memory / CHECK_SHARE`` (the checker's own guard)."""
-
-
-@dataclass
-class Doing:
-    """What the sweep is doing now (the progress layer reads it; the engine never prints)."""
-
-    what: str = "starting"
-    count: int = 0
-    unit: str = ""
-    replays: Callable[[], int] | None = None
-    """The replays made so far, where they are not the unit counted (a spread's remembered answers)."""
-
-    def set(self, what: str, unit: str = "", replays: Callable[[], int] | None = None) -> None:
-        self.what, self.count, self.unit, self.replays = what, 0, unit, replays
-
-    def tick(self, count: int) -> None:
-        self.count = count
-
-    def __str__(self) -> str:
-        text = self.what + (f", {self.count:,} {self.unit}" if self.unit else "")
-        return text + (f", {self.replays():,} replays" if self.replays is not None else "")
 
 
 @dataclass
@@ -193,6 +173,7 @@ class Sweep:
         space, status = self.spaces[lemma], self.status[lemma]
         if status[space.index(found.combo)] != OPEN:
             return []
+        self.doing.set(f"check {len(self.checks) + 1}: closing {lemma.value}")
         verdict = found.verdicts.get(lemma, Verdict.INCONCLUSIVE)
         doc = found.witnesses.get(lemma)
         if verdict is Verdict.VIOLATED and doc is not None:
@@ -263,7 +244,7 @@ class Sweep:
         self, space: Space, among: np.ndarray, reference: Any, explored: list[Explored], lemma: Lemma
     ) -> Equivalence:
         self.doing.set(f"check {len(self.checks) + 1}: closing {lemma.value} (same graph)", "replays")
-        return same_exploration(space, among, reference, explored, lemma, tick=self.doing.tick)
+        return same_exploration(space, among, reference, explored, lemma, tick=self.doing.tick, work=WORK)
 
     def _within_known(
         self, space: Space, among: np.ndarray, reference: Any, explored: list[Explored], lemma: Lemma
@@ -314,9 +295,10 @@ class Sweep:
     ) -> bool:
         """Check and close, step by step, until nothing is open (``True``), ``max_checks`` more checks
         were picked, or the clock (``time.monotonic()``) passed ``deadline`` between two steps (a run
-        makes one step at least, and each check closes one step at least: every run gets on). Checks run ``workers`` at a time on
-        a local Dask cluster, or on the Dask scheduler at ``cluster``; closing runs here, and every step
-        is saved before the next. ``progress`` hears one line per change."""
+        makes one step at least, and each check closes one step at least: every run gets on). Checks
+        run ``workers`` at a time on a local Dask cluster, or on the Dask scheduler at ``cluster``;
+        closing runs here, and every step is saved before the next. ``progress`` hears one line per
+        change."""
         left = max_checks
         steps = 0
 

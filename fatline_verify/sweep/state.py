@@ -119,7 +119,9 @@ def resume(sweep: Sweep) -> bool:
         )
     witnesses, checks, replays = data.get("witnesses"), data.get("checks"), data.get("replays", 0)
     pending = _pending(sweep, data.get("pending"))
-    traces = {w["trace"] for w in witnesses} if isinstance(witnesses, list) and all(map(_witness_ok, witnesses)) else None
+    traces = (
+        {w["trace"] for w in witnesses} if isinstance(witnesses, list) and all(map(_witness_ok, witnesses)) else None
+    )
     if (
         traces is None
         or not isinstance(checks, list)
@@ -146,10 +148,11 @@ def resume(sweep: Sweep) -> bool:
                     "(changed since fatline sweep wrote it); expected the sweep as fatline left it, or a new --out"
                 )
     status = _read_status(sweep)
-    known = _read_known(sweep, digests.get(KNOWN_FILE)) if digests is not None and KNOWN_FILE in digests else {}
+    known = _read_known(sweep, digests[KNOWN_FILE]) if digests is not None and KNOWN_FILE in digests else {}
     sweep.status.update(status)
     sweep.known.clear()
     sweep.known.update(known)
+    assert isinstance(witnesses, list)  # checked above
     sweep.witnesses = list(witnesses)
     sweep.checks = list(checks)
     sweep.replays = replays
