@@ -186,3 +186,14 @@ def test_a_corrupt_corpus_is_refused_in_one_line(tmp_path):
     write_json(path, corpus_module.seal({**bad}))
     with pytest.raises(InvalidInput, match="focus=7"):
         read_corpus(path)
+
+
+def test_making_the_corpus_refuses_bad_input_before_any_work(tmp_path, capsys):
+    precious = tmp_path / "precious.json"
+    precious.write_text('{"mine": true}\n')
+    assert corpus_module.main(["--proofs", str(tmp_path / "none"), "--out", str(tmp_path / "c.json")]) == 2
+    assert "proofs=" in capsys.readouterr().err and not (tmp_path / "c.json").exists()
+    assert corpus_module.main(["--proofs", str(PROOFS), "--known", str(tmp_path / "none")]) == 2
+    assert "known=" in capsys.readouterr().err
+    assert corpus_module.main(["--proofs", str(PROOFS), "--out", str(precious)]) == 2
+    assert "not a corpus" in capsys.readouterr().err and precious.read_text() == '{"mine": true}\n'

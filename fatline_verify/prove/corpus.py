@@ -34,7 +34,7 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
-from ..errors import InvalidInput, OutputFailed
+from ..errors import FatlineError, InvalidInput, OutputFailed
 from ..integrity import seal, sealed
 from ..model.config import Model
 from ..model.numbers import Point
@@ -318,14 +318,21 @@ def main(argv: Sequence[str] | None = None) -> int:
     p.add_argument("--out", default=str(CORPUS_PATH), help="the corpus file (default: the package's)")
     args = p.parse_args(argv)
     proofs, known_dir, out = Path(args.proofs), Path(args.known), Path(args.out)
+    problem = ""
     if not proofs.is_dir():
-        print(f"error: proofs={args.proofs!r}: expected a directory of fatline prove results", file=sys.stderr)
+        problem = f"proofs={args.proofs!r}: expected a directory of fatline prove results"
+    elif not known_dir.is_dir():
+        problem = f"known={args.known!r}: expected a directory of traces (docs/known)"
+    elif out.exists() and (read_json(out) or {}).get("format") != FORMAT:
+        problem = f"out={args.out!r}: exists and is not a corpus this command wrote; expected a new file or one"
+    if problem:
+        print(f"fatline: error: {problem}", file=sys.stderr)
         return 2
-    if out.exists() and (read_json(out) or {}).get("format") != FORMAT:
-        print(f"error: out={args.out!r}: exists and is not a corpus this command wrote", file=sys.stderr)
+    try:
+        entries = build(proofs, sorted(known_dir.glob("*.json")))
+    except FatlineError as exc:
+        print(f"fatline: error: {exc}", file=sys.stderr)
         return 2
-    known = sorted(known_dir.glob("*.json")) if known_dir.is_dir() else []
-    entries = build(proofs, known)
     write_json(out, corpus_document(entries))
     keys = len({e.key for e in entries})
     print(f"{len(entries)} counterexamples of {keys} obligations written to {out}")
