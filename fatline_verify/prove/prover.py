@@ -401,7 +401,7 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-ENCODING_VERSION = 11
+ENCODING_VERSION = 10
 """Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
 role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
 initial search over the reals after a non-initial solution, fsync replays activate every robot;
@@ -420,12 +420,13 @@ a finer grid: most of the time went to Python, not z3), its budget counted at 3 
 rate (was 4), a polish repeated at most 3 times per set of free unknowns, and a check's clock limit
 0.1 s above 1.5 times its budget (a sliver of budget stopped by the clock was reported as load),
 and an earlier run's counterexample of a claim without a trace (its row's configuration) replayed
-first, as traces were; 11: the shipped counterexample corpus (:mod:`fatline_verify.prove.corpus`)
-replayed before an earlier run's, and each row says what decided it (``decided_by``). Not bumped
-for the small swarms enumerated after the first round
+first, as traces were. Not bumped for the small swarms enumerated after the first round
 (:mod:`fatline_verify.prove.small`): they find nothing where a row is PROVED (a test runs every
 PROVED row of ``proofs/`` through them), and a VIOLATED row replays its own counterexample first, so
-only an INCONCLUSIVE row can change, which ``--redo-inconclusive`` re-runs."""
+only an INCONCLUSIVE row can change, which ``--redo-inconclusive`` re-runs. Nor for the shipped
+counterexample corpus (:mod:`fatline_verify.prove.corpus`) and the rows' ``decided_by``: the corpus
+only adds candidates replayed first, each believed only if it replays, none of them beside a PROVED
+row (``tests/test_prove_corpus.py``), so again only an INCONCLUSIVE row can change."""
 
 
 __all__ = [
