@@ -524,13 +524,35 @@ def prove_counts(results: list[dict[str, Any]]) -> list[str]:
     return lines
 
 
+DECIDED_BY = {
+    "search": "the search",
+    "corpus": "the shipped counterexample corpus",
+    "earlier": "an earlier run's counterexample",
+    "given": "--known",
+}
+"""How the summary names what decided a row (:data:`fatline_verify.prove.corpus.DECIDERS`)."""
+
+
+def prove_deciders(results: list[dict[str, Any]]) -> list[str]:
+    """One line: what decided the VIOLATED rows (a row's ``decided_by``; rows written before it was
+    recorded are not counted), none without such a row."""
+    got = [str(r["decided_by"]) for r in results if r.get("verdict") == "VIOLATED" and r.get("decided_by")]
+    if not got:
+        return []
+    counts = ", ".join(
+        f"{got.count(k)} by {DECIDED_BY.get(k, k)}" for k in dict.fromkeys([*DECIDED_BY, *got]) if k in got
+    )
+    return [f"VIOLATED decided: {counts} (each replayed by the executable model)"]
+
+
 def prove_lines(model: Any, results: list[dict[str, Any]], out: Any, *, verbose: bool = False) -> list[str]:
     """The summary of ``fatline prove``: verdict counts per lemma, then one line per results row:
     obligation, verdict, seconds and a short reason; ``verbose``: every field, the reason in full, the
     trace, and what the ``robots`` column counts."""
-    lines = [f"model {model.describe()}", "", *prove_counts(results), ""]
+    lines = [f"model {model.describe()}", "", *prove_counts(results), *prove_deciders(results), ""]
     if verbose:
-        lines += table(PROVE_COLUMNS, [prove_row(r, r.get("trace") or "") for r in results])
+        rows = [[*prove_row(r, r.get("trace") or ""), str(r.get("decided_by", ""))] for r in results]
+        lines += table([*PROVE_COLUMNS, "decided by"], rows)
         lines += ["", f"Columns: {PROVE_ROBOTS_LEGEND}."]
     else:
         lines += table(PROVE_SHORT_COLUMNS, [prove_short_row(r) for r in results])

@@ -34,6 +34,7 @@ def _fake_prove(verdict: Verdict):
         earlier=None,
         given=(),
         on_start=None,
+        corpus=True,
     ):
         tasks = prover.tasks_for(model, lemmas) if tasks is None else tasks
         results = []

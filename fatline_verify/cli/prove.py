@@ -89,6 +89,7 @@ def cmd_prove(args: argparse.Namespace) -> int:
                 earlier=store.rows,
                 given=given,
                 on_start=begun,
+                corpus=not args.no_corpus,
             )
         except KeyboardInterrupt:
             interrupted = True
@@ -182,6 +183,12 @@ def register(sub: Any) -> None:
         help="counterexamples found elsewhere (by hand: fatline simulate --trace): each trace's initial "
         "configuration is replayed against every obligation before any search, every robot tried as r; one "
         "that decides the case and breaks the claim is VIOLATED, its source named",
+    )
+    p.add_argument(
+        "--no-corpus",
+        action="store_true",
+        help="leave out the counterexample corpus shipped with the tool (by default replayed before any search; "
+        "each row says whether the search, the corpus, an earlier run or --known decided it)",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="no progress")
     p.add_argument(

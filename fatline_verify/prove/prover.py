@@ -174,6 +174,7 @@ def prove(
     earlier: Mapping[str, dict[str, Any]] | None = None,
     given: Sequence[Given] = (),
     on_start: Callable[[str], None] | None = None,
+    corpus: bool = True,
 ) -> list[ProofResult]:
     """Every obligation of ``lemmas`` (or exactly ``tasks``) for ``model``; ``.smt2`` files under ``out``.
 
@@ -185,7 +186,9 @@ def prove(
     ``earlier``: an earlier run's results rows by obligation key, whose replayed configurations (the
     claims without a trace: ``closer``, ``seen``, ``x-nondecreasing``) are replayed first likewise;
     ``given``: configurations handed in (``--known``), replayed against every per-case obligation;
-    ``on_start(key)``: an obligation's process has started (``progress(key)``: it has finished).
+    ``on_start(key)``: an obligation's process has started (``progress(key)``: it has finished);
+    ``corpus``: the shipped counterexample corpus (:mod:`fatline_verify.prove.corpus`) is replayed
+    first of all (``fatline prove --no-corpus``: not at all).
     """
     tasks = tasks_for(model, lemmas) if tasks is None else tasks
     if not tasks:
@@ -203,6 +206,8 @@ def prove(
             written = traces if traces is not None else out / "traces" if out else None
             known = _known_all(model, task.key, written, out, earlier)
             kwargs = {"timeout": timeout, "out": out, "note": note, "known": known, "given": tuple(given)}
+            if corpus:
+                kwargs["corpus"] = corpus_known(paper_part(model), task.key)
             calls.append((prove_spec, (paper_part(model), task), kwargs))
         else:
             calls.append((prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out}))
@@ -286,6 +291,22 @@ def _known_all(
     return found
 
 
+def corpus_known(model: Model, key: str) -> list[Known]:
+    """The shipped corpus's candidates for the obligation ``key`` (:func:`fatline_verify.prove.corpus.known_for`),
+    then its mirror obligation's (:func:`mirror_key`), reflected in the x-axis, as for an earlier run's."""
+    from .corpus import known_for
+
+    found = known_for(model, key)
+    mirror = mirror_key(key)
+    if mirror is not None:
+        _, case = mirror.split("/", 1)
+        found += [
+            (f"the mirror image (y to -y) of {where} for {case}", reflect(doc))
+            for where, doc in known_for(model, mirror)
+        ]
+    return found
+
+
 _MIRROR = {"scenario-2": "scenario-3", "scenario-3": "scenario-2", "up": "down", "down": "up"}
 
 
@@ -312,7 +333,7 @@ def reflect(doc: dict[str, Any]) -> dict[str, Any]:
         for point in doc["configuration"]:
             x, _, y = str(point).partition(",")
             flipped.append(f"{x},{neg(y)}" if y else str(point))
-        return {"configuration": flipped}
+        return {"configuration": flipped, **({"focus": doc["focus"]} if "focus" in doc else {})}
     out = dict(doc)
     if isinstance(doc.get("initial"), list):
         out["initial"] = [[p[0], neg(p[1])] if isinstance(p, list) and len(p) == 2 else p for p in doc["initial"]]
@@ -402,7 +423,10 @@ and an earlier run's counterexample of a claim without a trace (its row's config
 first, as traces were. Not bumped for the small swarms enumerated after the first round
 (:mod:`fatline_verify.prove.small`): they find nothing where a row is PROVED (a test runs every
 PROVED row of ``proofs/`` through them), and a VIOLATED row replays its own counterexample first, so
-only an INCONCLUSIVE row can change, which ``--redo-inconclusive`` re-runs."""
+only an INCONCLUSIVE row can change, which ``--redo-inconclusive`` re-runs. Nor for the shipped
+counterexample corpus (:mod:`fatline_verify.prove.corpus`) and the rows' ``decided_by``: the corpus
+only adds candidates replayed first, each believed only if it replays, none of them beside a PROVED
+row (``tests/test_prove_corpus.py``), so again only an INCONCLUSIVE row can change."""
 
 
 __all__ = [

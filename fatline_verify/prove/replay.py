@@ -114,7 +114,7 @@ def replay_known(model: Model, spec: Spec, doc: dict[str, Any], *, initial: bool
     it does not (the readings changed, say), and the search runs. ``initial=False`` also returns a
     violation from a configuration that is not initial (an earlier INCONCLUSIVE row's trace)."""
     if "configuration" in doc:
-        return _replay_configuration(model, spec, doc["configuration"])
+        return _replay_configuration(model, spec, doc["configuration"], doc.get("focus"))
     try:
         state = initial_radii(doc)
         j = int(doc["violation"]["robots"][1])
@@ -128,9 +128,10 @@ def replay_known(model: Model, spec: Spec, doc: dict[str, Any], *, initial: bool
     return got if isinstance(got, Replayed) and (got.initial or not initial) and got.doc is not None else None
 
 
-def _replay_configuration(model: Model, spec: Spec, configuration: Any) -> Replayed | None:
+def _replay_configuration(model: Model, spec: Spec, configuration: Any, focus: Any = None) -> Replayed | None:
     """A trace-less counterexample (``x,y`` strings in lattice units, r first) replayed; for ``closer``
-    each other robot is tried as the one r does not get closer to."""
+    each other robot is tried as the one r does not get closer to (``focus``, its index, first if
+    given: the replay puts it last, so a configuration replayed with its last robot first keeps its order)."""
     try:
         raw = [tuple(Fraction(v) for v in str(p).split(",")) for p in configuration]
     except (TypeError, ValueError, ZeroDivisionError):
@@ -141,6 +142,10 @@ def _replay_configuration(model: Model, spec: Spec, configuration: Any) -> Repla
     r = points[0]
     others = {f"x{k}": (Fraction(p[0] - r[0]), Fraction(p[1] - r[1])) for k, p in enumerate(points[1:], 1)}
     focuses = list(others) if spec.form == CLOSER else [""]
+    first = f"x{focus}" if isinstance(focus, int) and not isinstance(focus, bool) else ""
+    if first in focuses:
+        focuses.remove(first)
+        focuses.insert(0, first)
     for focus in focuses:
         positions = {"r": (Fraction(0), Fraction(0)), **others}
         if focus:

@@ -62,6 +62,9 @@ class ProofResult:
     configuration: tuple[str, ...] = ()
     """For a claim without a trace (``seen``, ``x-nondecreasing``, ``closer``): the replayed
     configuration, r first, as exact ``x,y`` strings in lattice units (radii when q = 1)."""
+    decided_by: str = "search"
+    """What decided it (:data:`fatline_verify.prove.corpus.DECIDERS`): the search, or a counterexample
+    replayed first from the shipped corpus, an earlier run, or ``--known``."""
 
     @property
     def key(self) -> str:
