@@ -24,6 +24,7 @@ from ..trace.simulate import Outcome, Run, outcome_after
 from ..trace.traces import initial_radii, replayed_document
 from .smt.claims import (
     CLOSER,
+    ON_RMA,
     ONE_MOVER,
     SEEN,
     TWO_MOVERS,
@@ -67,7 +68,7 @@ def replay(model: Model, spec: Spec, positions: dict[str, tuple[Fraction, Fracti
     problems = initial_problems(state, model)
     initial = not problems
     form = spec.form
-    if form in (SEEN, X_NONDECREASING, CLOSER):
+    if form in (SEEN, ON_RMA, X_NONDECREASING, CLOSER):
         what = _claim_fails(model, spec, state, decisions[0], j)
         if what is None:
             return "the claim holds on the replayed configuration"
@@ -157,6 +158,9 @@ def _claim_fails(model: Model, spec: Spec, state: Sequence[Point], dec: Decision
     dest = show_point(model.from_lattice(dec.destination))
     if spec.form == X_NONDECREASING:
         return f"r moves to {dest}: x decreases" if dx < 0 else None
+    if spec.form == ON_RMA:
+        right_most = all(p[0] <= state[0][0] for p in state)
+        return f"r is on the right-most axis and moves to {dest}: it leaves the axis" if right_most and dx != 0 else None
     if spec.form == SEEN:
         seen = [c for c, _ in dec.classification]
         if dx > 0 and all(c[0] < dx for c in seen):

@@ -20,6 +20,7 @@ from ..schedulers.activation import encoded_schedulers
 from .smt.claims import (
     CLOSER,
     GLOBAL,
+    ON_RMA,
     ONE_MOVER,
     SEEN,
     TWO_MOVERS,
@@ -60,8 +61,10 @@ class ProofResult:
     case: str = "any"
     other: str = ""
     configuration: tuple[str, ...] = ()
-    """For a claim without a trace (``seen``, ``x-nondecreasing``, ``closer``): the replayed
+    """For a claim without a trace (``seen``, ``on-rma``, ``x-nondecreasing``, ``closer``): the replayed
     configuration, r first, as exact ``x,y`` strings in lattice units (radii when q = 1)."""
+    basis: str = ""
+    """For PROVED: ``vacuous``, ``immediate`` or ``substantive`` (:mod:`fatline_verify.prove.basis`)."""
 
     @property
     def key(self) -> str:
@@ -191,6 +194,7 @@ def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: b
             tasks.append(GlobalTask())
         if lemma is Lemma.RMA_FIXED:
             tasks += [Spec.of(lemma, SEEN, c) for c in moving]
+            tasks += [Spec.of(lemma, ON_RMA, c) for c in moving]
         if lemma is Lemma.APPROACH:
             tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
     return tasks
@@ -207,6 +211,7 @@ def _repaired_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
         tasks += leg_specs((lemma,))
         if lemma is Lemma.RMA_FIXED:
             tasks += [Spec.of(lemma, SEEN, c) for c in moving]
+            tasks += [Spec.of(lemma, ON_RMA, c) for c in moving]
         if lemma is Lemma.APPROACH:
             tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
     return tasks

@@ -11,6 +11,9 @@ An obligation asks z3 for a configuration in which r (at the origin) makes the d
   the cases of one rule from the same snapshot, with its own witnesses. Claims: ``no-collision``
   (the two movers come within 2, per ``timing``), ``connectivity`` (they saw each other and do not).
 - ``seen`` (``rma-fixed``): r's destination is right of r and of every robot r sees.
+- ``on-rma`` (``rma-fixed``, the other half of Lemma 3: "a robot on the RMA never leaves it"): no
+  named robot is right of r (r is on the right-most axis of any swarm they are part of), and r's
+  destination has another x.
 - ``x-nondecreasing`` (``approach``): r's destination has a smaller x.
 - ``closer`` (``connectivity``, Lemma 1's argument): some robot of B u C u D that r sees is not
   closer to r's destination than to r.
@@ -48,6 +51,7 @@ class NotEncoded(Exception):
 ONE_MOVER = "one-mover"
 TWO_MOVERS = "two-movers"
 SEEN = "seen"
+ON_RMA = "on-rma"
 X_NONDECREASING = "x-nondecreasing"
 CLOSER = "closer"
 GLOBAL = "global"
@@ -58,6 +62,7 @@ CLAIM = {
     (Lemma.NO_COLLISION, TWO_MOVERS): "a robot s moving in the same round never comes within distance 2 of r",
     (Lemma.CONNECTIVITY, TWO_MOVERS): "a robot s moving in the same round that r saw stays visible to r",
     (Lemma.RMA_FIXED, SEEN): "r does not move right of every robot it sees (and of itself)",
+    (Lemma.RMA_FIXED, ON_RMA): "r, on the right-most axis (no robot right of it), keeps its x (never leaves the axis)",
     (Lemma.APPROACH, X_NONDECREASING): "r's move does not decrease its x",
     (Lemma.CONNECTIVITY, CLOSER): "after the move r is strictly closer to every robot of B u C u D it sees (Lemma 1)",
 }
@@ -205,10 +210,15 @@ def lattice_extent(model: Model) -> Fraction:
     return 3 * view_reach(model) + 6
 
 
-def build(ar: Arith, model: Model, spec: Spec, *, initial: bool = False, vacuity: bool = False) -> Built:
+def build(
+    ar: Arith, model: Model, spec: Spec, *, initial: bool = False, vacuity: bool = False, immediate: bool = False
+) -> Built:
     """The obligation ``spec`` over ``ar``'s domain. ``initial`` (lattice searches) adds the paper's
     initial condition on the named robots (pairwise distance >= delta, connected); the replay checks
-    it again. ``vacuity`` keeps only "r (and s) make their decisions": unsat means the case never fires."""
+    it again. ``vacuity`` keeps only "r (and s) make their decisions": unsat means the case never fires.
+    ``immediate`` leaves out every decider's universal conditions (the claim's premises only: the
+    witnesses, the destination built from them, disjoint discs): unsat means the claim follows from
+    the rule's construction (:mod:`fatline_verify.prove.basis`)."""
     scheduler = model.options.scheduler
     form = spec.form
     r = ar.origin()
@@ -240,14 +250,14 @@ def build(ar: Arith, model: Model, spec: Spec, *, initial: bool = False, vacuity
         for b in names[i + 1 :]:
             sep = apart(ar, model, bodies[a], bodies[b])
             asserts.append(sep if (a, b) in must_differ else z3.Or(same(bodies[a], bodies[b]), sep))
-    dr = decide_group(ar, model, spec.mine, r, r_roles, universe, "r")
+    dr = decide_group(ar, model, spec.mine, r, r_roles, universe, "r", not immediate)
     asserts += dr.constraints
     ds: Decided | None = None
     if s is not None:
-        ds = decide_group(ar, model, spec.other, s, other_roles, universe, "s")
+        ds = decide_group(ar, model, spec.other, s, other_roles, universe, "s", not immediate)
         asserts += ds.constraints
     elif o is not None and form == ONE_MOVER and scheduler is Scheduler.FSYNC:
-        asserts += decide_group(ar, model, spec.other, o, other_roles, universe, "o").constraints
+        asserts += decide_group(ar, model, spec.other, o, other_roles, universe, "o", not immediate).constraints
     focus = "s" if s is not None else "o" if o is not None else ""
     bounds: list[z3.BoolRef] = []
     if ar.lattice:
@@ -289,6 +299,9 @@ def _violation(
         others = [p for name, p in bodies.items() if name != "r"]
         right = [z3.Or(same(p, r), z3.Not(sees(ar, model, r, p)), p[0] < dr.dest[0]) for p in others]
         return z3.And(dr.dest[0] > r[0], *right)
+    if form == ON_RMA:
+        others = [p for name, p in bodies.items() if name != "r"]
+        return z3.And(*[p[0] <= r[0] for p in others], dr.dest[0] != r[0])
     if form == X_NONDECREASING:
         return dr.dest[0] < r[0]
     if form == CLOSER:
