@@ -24,11 +24,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..lemmas.properties import Verdict
 from ..model.config import Model
-from .tasks import ProofResult
+
+if TYPE_CHECKING:  # the counts are read by the report pages, which do not load z3
+    from .tasks import ProofResult
 
 SUBSTANTIVE = "substantive"
 IMMEDIATE = "immediate"
@@ -113,7 +115,7 @@ def counts(rows: list[dict[str, Any]]) -> dict[str, int]:
 
 def counts_text(rows: list[dict[str, Any]]) -> str:
     """``3 substantive, 40 immediate, 20 vacuous`` for the PROVED rows of ``rows``."""
-    return ", ".join(f"{n} {k}" for k, n in counts(rows).items())
+    return ", ".join(f"{n} {k}" for k, n in counts(rows).items() if n)
 
 
 __all__ = ["BASES", "IMMEDIATE", "SUBSTANTIVE", "VACUOUS", "basis_of", "classified", "counts", "counts_text", "decided"]
