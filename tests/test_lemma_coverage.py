@@ -134,11 +134,31 @@ def test_two_movers_are_needed_except_under_the_centralized_scheduler():
     assert v.verdict == PROVED and "no two robots move at once" in v.why
 
 
-def test_the_legs_rest_on_a_fact_by_inspection():
+def test_the_legs_need_the_repairs_own_rightward_obligations():
     rows = [_row("no-collision", "leg", "PROVED", "horizontal", SUBSTANTIVE)]
-    rows += [_row("approach", "x-nondecreasing", "PROVED", "a", IMMEDIATE)]
+    rows += [_row("approach", "x-nondecreasing", "PROVED", "scenario-1", IMMEDIATE)]
     v = _verdicts("repaired", rows)["no-collision"]
-    assert v.verdict == NOT_PROVED and "by inspection" in v.why and "repair-align" in v.why
+    assert v.verdict == NOT_PROVED and "rightward: no obligation for repair-align, repair-approach" in v.why
+    rows += [
+        _row("approach", "x-nondecreasing", "PROVED", f"repair-{k}.c", IMMEDIATE) for k in ("align", "approach")
+    ]
+    assert _verdicts("repaired", rows)["no-collision"].verdict == PROVED
+
+
+def test_the_repairs_own_destinations_are_obligations():
+    """repair-align and repair-approach never decrease x, never move right of every robot seen, never
+    take a robot off the right-most axis; repair-contract keeps x: each PROVED, from the rules' encoding."""
+    from fatline_verify.prove.tasks import paper_part
+
+    model = load_model("repaired")
+    specs = [t for t in tasks_for(model, (Lemma.RMA_FIXED, Lemma.APPROACH)) if getattr(t, "repair", "")]
+    assert {t.repair for t in specs} == {"align", "approach", "contract"}
+    picked = {}
+    for t in specs:
+        picked.setdefault((t.form, t.repair), t)
+    for t in picked.values():
+        got = decided(prove_spec, paper_part(model), t, timeout=20, out=None, small=False)
+        assert got.verdict is Verdict.PROVED, (t.key, got.reason)
 
 
 def test_every_table_entry_has_parts_and_an_argument():

@@ -64,6 +64,8 @@ class Part:
     """A fact the argument uses that no obligation checks (the part is then never PROVED)."""
     lemma: str = ""
     """The lemma whose rows hold the forms, if not the entry's own (the legs' rightward: approach's)."""
+    cases: Callable[[Model], tuple[str, ...]] = field(default=lambda model: (), compare=False)
+    """Case-name prefixes the part needs a row of under ``model`` (the repairs' own destinations)."""
 
 
 @dataclass(frozen=True)
@@ -84,13 +86,27 @@ def paper_lemma(lemma: Lemma | str, parts: tuple[Part, ...], argument: str, besi
     return Entry(str(lemma), "paper", parts, argument, beside)
 
 
+def _repairs(model: Model, *, vertical: bool = True) -> tuple[str, ...]:
+    """The repaired rule set's own destinations ``model`` turns on, as case-name prefixes
+    (:func:`fatline_verify.prove.tasks.repair_cases`); ``vertical=False`` leaves out the contraction,
+    which makes no horizontal leg."""
+    from ..rules.repaired.options import RepairApproach, RepairStack
+
+    out: list[str] = []
+    if model.options.repair_stack is RepairStack.ALIGN:
+        out += ["repair-align."] + (["repair-contract."] if vertical else [])
+    if model.options.repair_approach is RepairApproach.ON:
+        out.append("repair-approach.")
+    return tuple(out)
+
+
 RIGHTWARD = Part(
     "rightward",
     ("x-nondecreasing",),
-    "a horizontal leg goes right: the paper's destinations never decrease x (x-nondecreasing, per case)",
+    "a horizontal leg goes right: no destination decreases x (x-nondecreasing per case, the paper's and the "
+    "repairs' repair-align and repair-approach)",
     lemma=str(Lemma.APPROACH),
-    inspection="repair-align (to the greatest x r sees, used only if right of r) and repair-approach (2 radii short "
-    "of psi_right, used only if right of r) are rightward by the code's guards, not by an obligation",
+    cases=lambda model: _repairs(model, vertical=False),
 )
 
 
@@ -158,16 +174,11 @@ TABLE: tuple[Entry, ...] = (
         str(Lemma.RMA_FIXED),
         "legs",
         (
-            SEEN,
-            ON_RMA,
-            Part(
-                "repairs",
-                (),
-                "the repairs' own moves",
-                inspection="repair-align, repair-approach and repair-contract moves have no seen / on-rma obligation",
-            ),
+            Part("seen", SEEN.forms, SEEN.says, cases=_repairs),
+            Part("on-rma", ON_RMA.forms, ON_RMA.says, refutes=True, cases=_repairs),
         ),
-        "the paper's destinations (seen, on-rma per case); a leg goes no farther than its destination",
+        "the paper's destinations and the repairs' own (seen, on-rma per case; repair-align, repair-approach, "
+        "repair-contract among them); a leg goes no farther than its destination",
     ),
     Entry(str(Lemma.APPROACH), "legs", (X_STEP, REACHES), "liveness: needs a measure, not a step fact"),
     _step("progress", "enabled"),
@@ -251,6 +262,8 @@ def judge(entry: Entry, model: Model, rows: list[dict[str, Any]]) -> LemmaVerdic
         got = rows_of(part)
         if not got:
             missing.append(f"{part.name}: no rows (not run)")
+        elif absent := [p for p in part.cases(model) if not any(str(r.get("case", "")).startswith(p) for r in got)]:
+            missing.append(f"{part.name}: no obligation for {', '.join(a.rstrip('.') for a in absent)}")
         elif any(r["verdict"] != "PROVED" for r in got):
             bad = [r for r in got if r["verdict"] != "PROVED"]
             missing.append(f"{part.name}: {len(bad)} of {len(got)} not PROVED ({_count(bad)})")

@@ -5,7 +5,7 @@ any search (:func:`replay_known`). Nothing is reported VIOLATED without this rep
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Any
 
@@ -69,7 +69,13 @@ def replay(model: Model, spec: Spec, positions: dict[str, tuple[Fraction, Fracti
     initial = not problems
     form = spec.form
     if form in (SEEN, ON_RMA, X_NONDECREASING, CLOSER):
-        what = _claim_fails(model, spec, state, decisions[0], j)
+        dec = decisions[0]
+        if spec.repair:
+            moved = _repair_destination(model, spec.repair, state, dec)
+            if isinstance(moved, str):
+                return moved
+            dec = replace(dec, destination=moved)
+        what = _claim_fails(model, spec, state, dec, j)
         if what is None:
             return "the claim holds on the replayed configuration"
         return Replayed(state, j, initial, problems, None, what)
@@ -101,6 +107,21 @@ def replay(model: Model, spec: Spec, positions: dict[str, tuple[Fraction, Fracti
         origin["other"] = spec.other_name
     doc = replayed_document(run, origin, focus_lemma)
     return Replayed(state, j, initial, problems, doc, what)
+
+
+def _repair_destination(model: Model, repair: str, state: Sequence[Point], dec: Decision) -> Point | str:
+    """Where the repaired rules' own destination takes r in ``state`` (r deciding ``dec`` by the paper's
+    rules), by the rules' own functions; or why it does not move r."""
+    from ..rules.repaired.algorithm import align_destination, approach_destination
+    from ..schedulers.round import snapshot
+
+    if repair == "align":
+        got = align_destination(snapshot(state, 0, model))
+    elif repair == "approach":
+        got = approach_destination(dec, model)
+    else:
+        return f"the repair {repair}'s moves are not replayed on their own (they depend on the legs allowed)"
+    return f"the repair {repair} does not move r in the replayed configuration" if got is None else got
 
 
 Known = tuple[str, dict[str, Any]]

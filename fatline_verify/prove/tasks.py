@@ -206,15 +206,37 @@ def _repaired_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
     paper's rules under its readings (:func:`paper_part`; the legs' rightward horizontal rests on
     the latter)."""
     moving = moving_cases(paper_part(model))
+    repairs = repair_cases(model)
     tasks: list[Task] = []
     for lemma in lemmas:
         tasks += leg_specs((lemma,))
         if lemma is Lemma.RMA_FIXED:
             tasks += [Spec.of(lemma, SEEN, c) for c in moving]
             tasks += [Spec.of(lemma, ON_RMA, c) for c in moving]
+            tasks += [Spec(lemma, form, (c,), repair=k) for form in (SEEN, ON_RMA) for k, c in repairs]
         if lemma is Lemma.APPROACH:
             tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
+            tasks += [Spec(lemma, X_NONDECREASING, (c,), repair=k) for k, c in repairs if k != "contract"]
     return tasks
+
+
+def repair_cases(model: Model) -> list[tuple[str, Case]]:
+    """The repaired rule set's own destinations (:data:`~fatline_verify.prove.smt.claims.REPAIRS`) the model
+    turns on, each with the paper case it replaces: ``align`` and ``contract`` the only-A u I stay,
+    ``approach`` each moving Scenario 4 case. (A vertical contraction keeps x: it has seen and on-rma
+    obligations, no x-nondecreasing one, and makes no horizontal leg.)"""
+    from ..rules.paper.algorithm import Rule
+    from ..rules.repaired.algorithm import SCENARIO_4
+    from ..rules.repaired.options import RepairApproach, RepairStack
+
+    paper = paper_part(model)
+    out: list[tuple[str, Case]] = []
+    if model.options.repair_stack is RepairStack.ALIGN:
+        stays = [c for c in staying_cases(paper) if c.rule is Rule.ONLY_AI]
+        out += [(k, c) for k in ("align", "contract") for c in stays]
+    if model.options.repair_approach is RepairApproach.ON:
+        out += [("approach", c) for c in moving_cases(paper) if c.rule in SCENARIO_4]
+    return out
 
 
 CLOSER_RULES = ("scenario-1", "scenario-2", "scenario-3", "uncovered-search")

@@ -55,8 +55,8 @@ RIGHTWARD = (
     "a horizontal leg goes right: it is one radius or less toward the paper's destination, whose x never "
     "decreases (the approach obligations of the same run: x-nondecreasing for every case of the paper's rules "
     "under these readings), or toward the repairs' own (repair-align: the greatest x r sees, right of r; "
-    "repair-approach: 2 radii short of psi_right, used only if right of r; repair-detour, when on: toward a "
-    "destination right of r, or at most to the greatest x r sees)"
+    "repair-approach: 2 radii short of psi_right, used only if right of r: their x-nondecreasing-repair-* "
+    "obligations; repair-detour, when on: toward a destination right of r, or at most to the greatest x r sees)"
 )
 """Why the ``horizontal`` class has ``dx > 0``: the one fact the leg obligations take from the rules."""
 
