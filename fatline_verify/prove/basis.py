@@ -15,8 +15,8 @@ query, never by a list of names.
   ``x-nondecreasing`` mostly are), not from the rest of the swarm.
 - **substantive**: neither: the proof needed the universal conditions.
 
-Each query asks the linear relaxation first (an unsat relaxation is an unsat query), then z3 over the
-reals within :data:`BUDGET` seconds; a query that does not answer leaves the stronger kind unclaimed
+Each query asks the linear relaxation first (an unsat relaxation is an unsat query), then the
+linearization, then z3 over the reals, within :data:`BUDGET` seconds in all; a query that does not answer leaves the stronger kind unclaimed
 (a row is called vacuous or immediate only on an unsat answer).
 """
 
@@ -49,11 +49,16 @@ VACUOUS_NOTE = "the case never fires under these readings (vacuous: its firing c
 
 
 def _unsat(built: Any, seconds: float) -> bool:
+    """Whether ``built`` is shown unsat within ``seconds``: its linear relaxation, its linearization
+    (exact cuts of every squared distance: :mod:`fatline_verify.prove.smt.linearize`), then z3 over the reals."""
     from .search import Budget
+    from .smt.linearize import Linearization
     from .smt.solving import relaxation
 
     spend = Budget(seconds)
-    if spend.solve(relaxation(built), seconds / 2).status == "unsat":
+    if spend.solve(relaxation(built), seconds / 4).status == "unsat":
+        return True
+    if spend.ask(Linearization(built).check, seconds / 2).status == "unsat":
         return True
     return spend.solve(built, spend.left()).status == "unsat"
 
