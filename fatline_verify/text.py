@@ -524,7 +524,8 @@ def prove_counts(results: list[dict[str, Any]]) -> list[str]:
         rows = [r for r in results if r["lemma"] == lemma]
         mine = [r["verdict"] for r in rows]
         split = f" ({counts_text(rows)})" if any(r.get("basis") for r in rows) else ""
-        counts = ", ".join(f"{mine.count(v)} {v}" + (split if v == "PROVED" else "") for v in dict.fromkeys(sorted(mine)))
+        kinds = dict.fromkeys(sorted(mine))
+        counts = ", ".join(f"{mine.count(v)} {v}" + (split if v == "PROVED" else "") for v in kinds)
         lines.append(f"{lemma}: {len(mine)} obligation{'s' if len(mine) != 1 else ''}: {counts}")
     return lines
 

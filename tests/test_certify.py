@@ -44,7 +44,7 @@ def test_a_fresh_certificate_checks_from_its_own_files(proved):
     assert got.ok, got.why
     assert got.atoms > 0 and got.cuts > 0
     text = proved.read_text()
-    assert f"; relaxed assertions: " in text and text.count("; cut relaxed!") == got.cuts
+    assert "; relaxed assertions: " in text and text.count("; cut relaxed!") == got.cuts
 
 
 def test_the_command_checks_a_directory_and_exits_0(proved, capsys):

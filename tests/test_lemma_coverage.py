@@ -114,10 +114,10 @@ def test_rma_fixed_is_proved_only_with_on_rma():
     on = [_row("rma-fixed", "on-rma", "PROVED", "a", SUBSTANTIVE), _row("rma-fixed", "on-rma", "PROVED", "b", VACUOUS)]
     v = _verdicts("paper", seen + on)["rma-fixed"]
     assert v.verdict == PROVED and v.counts == "4 PROVED (1 substantive, 1 immediate, 2 vacuous)"
-    broken = seen + [_row("rma-fixed", "on-rma", "VIOLATED", "a")]
+    broken = [*seen, _row("rma-fixed", "on-rma", "VIOLATED", "a")]
     assert _verdicts("paper", broken)["rma-fixed"].verdict == VIOLATED
     # a move right of every robot seen does not by itself move the axis
-    right = [_row("rma-fixed", "seen", "VIOLATED", "a")] + on
+    right = [_row("rma-fixed", "seen", "VIOLATED", "a"), *on]
     assert _verdicts("paper", right)["rma-fixed"].verdict == NOT_PROVED
 
 
@@ -139,9 +139,7 @@ def test_the_legs_need_the_repairs_own_rightward_obligations():
     rows += [_row("approach", "x-nondecreasing", "PROVED", "scenario-1", IMMEDIATE)]
     v = _verdicts("repaired", rows)["no-collision"]
     assert v.verdict == NOT_PROVED and "rightward: no obligation for repair-align, repair-approach" in v.why
-    rows += [
-        _row("approach", "x-nondecreasing", "PROVED", f"repair-{k}.c", IMMEDIATE) for k in ("align", "approach")
-    ]
+    rows += [_row("approach", "x-nondecreasing", "PROVED", f"repair-{k}.c", IMMEDIATE) for k in ("align", "approach")]
     assert _verdicts("repaired", rows)["no-collision"].verdict == PROVED
 
 

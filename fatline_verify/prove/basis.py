@@ -16,8 +16,8 @@ query, never by a list of names.
 - **substantive**: neither: the proof needed the universal conditions.
 
 Each query asks the linear relaxation first (an unsat relaxation is an unsat query), then the
-linearization, then z3 over the reals, within :data:`BUDGET` seconds in all; a query that does not answer leaves the stronger kind unclaimed
-(a row is called vacuous or immediate only on an unsat answer).
+linearization, then z3 over the reals, within :data:`BUDGET` seconds in all; a query that does not
+answer leaves the stronger kind unclaimed (a row is called vacuous or immediate only on an unsat answer).
 """
 
 from __future__ import annotations

@@ -17,7 +17,9 @@ def main(argv: list[str] | None = None) -> int:
     dirs = [Path(a) for a in (sys.argv[1:] if argv is None else argv)] or [Path("proofs")]
     for d in dirs:
         if not d.is_dir():
-            print(f"fatline: certify: {d.as_posix()}: no such directory; expected a directory of proofs", file=sys.stderr)
+            print(
+                f"fatline: certify: {d.as_posix()}: no such directory; expected a directory of proofs", file=sys.stderr
+            )
             return 2
     files = sorted(p for d in dirs for p in d.rglob("*.linear.smt2"))
     failed = 0

@@ -182,9 +182,15 @@ TABLE: tuple[Entry, ...] = (
     ),
     Entry(str(Lemma.APPROACH), "legs", (X_STEP, REACHES), "liveness: needs a measure, not a step fact"),
     _step("progress", "enabled"),
-    Entry("termination", "", (Part("measure", ("measure",), "a measure that decreases"),
-                              Part("enabled", ("enabled",), "some robot is enabled")),
-          "rests on safety, rigid moves and a fair round scheduler"),  # fmt: skip
+    Entry(
+        "termination",
+        "",
+        (
+            Part("measure", ("measure",), "a measure that decreases"),
+            Part("enabled", ("enabled",), "some robot is enabled"),
+        ),
+        "rests on safety, rigid moves and a fair round scheduler",
+    ),
 )
 """Every lemma under each encoding (``""``: whichever)."""
 
@@ -245,7 +251,11 @@ def judge(entry: Entry, model: Model, rows: list[dict[str, Any]]) -> LemmaVerdic
             if r["verdict"] == "VIOLATED":
                 case = r.get("case", r.get("rule", ""))
                 return LemmaVerdict(
-                    entry.lemma, VIOLATED, f"{part.name} {case}: {_where_dropped(str(r.get('reason', '')))}", len(mine), _count(mine)
+                    entry.lemma,
+                    VIOLATED,
+                    f"{part.name} {case}: {_where_dropped(str(r.get('reason', '')))}",
+                    len(mine),
+                    _count(mine),
                 )
     proved, missing, unencoded, skipped = [], [], [], []
     for part in entry.parts:
@@ -285,9 +295,7 @@ def judge(entry: Entry, model: Model, rows: list[dict[str, Any]]) -> LemmaVerdic
         return LemmaVerdict(
             entry.lemma, NOT_PROVED, f"{done}missing: {'; '.join(missing)}{tail}", len(mine), _count(mine)
         )
-    return LemmaVerdict(
-        entry.lemma, PROVED, f"{entry.argument}: {', '.join(proved)}{tail}", len(mine), _count(mine)
-    )
+    return LemmaVerdict(entry.lemma, PROVED, f"{entry.argument}: {', '.join(proved)}{tail}", len(mine), _count(mine))
 
 
 def part_forms_seen(entry: Entry, by_form: dict[str, list[dict[str, Any]]]) -> bool:
@@ -299,7 +307,9 @@ def encoding_of(model: Model) -> str:
     return "legs" if model.options.repaired else "paper"
 
 
-def lemma_verdicts(model: Model, rows: list[dict[str, Any]], lemmas: tuple[str, ...] | None = None) -> list[LemmaVerdict]:
+def lemma_verdicts(
+    model: Model, rows: list[dict[str, Any]], lemmas: tuple[str, ...] | None = None
+) -> list[LemmaVerdict]:
     """Every lemma with rows in ``rows`` (or each of ``lemmas``), judged by its table entry."""
     wanted = lemmas if lemmas is not None else tuple(dict.fromkeys(str(r.get("lemma")) for r in rows))
     out = []
@@ -322,7 +332,7 @@ __all__ = [
     "LemmaVerdict",
     "Part",
     "judge",
-    "lemma_verdicts",
     "legs_lemma",
+    "lemma_verdicts",
     "paper_lemma",
 ]

@@ -402,7 +402,9 @@ rate (was 4), a polish repeated at most 3 times per set of free unknowns, and a 
 and an earlier run's counterexample of a claim without a trace (its row's configuration) replayed
 first, as traces were; 11: every PROVED row carries its basis (vacuous, immediate, substantive:
 :mod:`fatline_verify.prove.basis`), a row that cannot fire is reported vacuous however its unsat was
-reached, and rma-fixed has the ``on-rma`` form (Lemma 3's "a robot on the RMA never leaves it"). Not bumped for the small swarms enumerated after the first round
+reached, rma-fixed has the ``on-rma`` form (Lemma 3's "a robot on the RMA never leaves it"), and a
+repaired model has obligations for the repairs' own destinations (``repair-align``, ``repair-approach``,
+``repair-contract``). Not bumped for the small swarms enumerated after the first round
 (:mod:`fatline_verify.prove.small`): they find nothing where a row is PROVED (a test runs every
 PROVED row of ``proofs/`` through them), and a VIOLATED row replays its own counterexample first, so
 only an INCONCLUSIVE row can change, which ``--redo-inconclusive`` re-runs."""

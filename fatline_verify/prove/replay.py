@@ -181,7 +181,8 @@ def _claim_fails(model: Model, spec: Spec, state: Sequence[Point], dec: Decision
         return f"r moves to {dest}: x decreases" if dx < 0 else None
     if spec.form == ON_RMA:
         right_most = all(p[0] <= state[0][0] for p in state)
-        return f"r is on the right-most axis and moves to {dest}: it leaves the axis" if right_most and dx != 0 else None
+        leaves = right_most and dx != 0
+        return f"r is on the right-most axis and moves to {dest}: it leaves the axis" if leaves else None
     if spec.form == SEEN:
         seen = [c for c, _ in dec.classification]
         if dx > 0 and all(c[0] < dx for c in seen):

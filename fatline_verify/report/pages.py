@@ -17,6 +17,8 @@ from typing import Any
 from ..lemmas.properties import CHECKED, Lemma
 from ..model.config import IMPLIED
 from ..model.options import CATALOGUE, Scheduler
+from ..prove.basis import counts_text
+from ..prove.coverage import LemmaVerdict, lemma_verdicts
 from ..schedulers.systems import system_for
 from ..text import (
     PROVE_ROBOTS_LEGEND,
@@ -28,8 +30,6 @@ from ..text import (
     prove_row,
     violation_line,
 )
-from ..prove.basis import counts_text
-from ..prove.coverage import LemmaVerdict, lemma_verdicts
 from .against_pages import against_html, against_markdown
 from .data import ModelReport
 

@@ -84,7 +84,9 @@ def check_certificate(linear: Path, *, cvc5_check: bool = True) -> Checked:
     for k, (mine, theirs) in enumerate(zip(relaxed, original, strict=True)):
         back = z3.substitute(mine, *pairs) if pairs else mine
         if not back.eq(theirs) and not z3.simplify(back).eq(z3.simplify(theirs)):
-            return Checked(where, False, f"relaxed assert {k}, its Booleans replaced by their atoms, is not the obligation's")
+            return Checked(
+                where, False, f"relaxed assert {k}, its Booleans replaced by their atoms, is not the obligation's"
+            )
     names = set(atom_text)
     for k, (name, cut) in enumerate(zip(cut_names, cuts, strict=True)):
         used = {str(c) for c in _booleans(cut)}
