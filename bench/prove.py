@@ -101,6 +101,7 @@ def saved(models: list[str], root: Path) -> None:
         data = json.loads((root / name / "results.json").read_text())
         obligations = data["obligations"]
         counts = Counter(r["verdict"] for r in obligations)
+        bases = Counter(r.get("basis", "?") for r in obligations if r["verdict"] == "PROVED")
         seconds = [r["seconds"] for r in obligations]
         files = [Path(r["smt2"]) for r in obligations if r.get("smt2") and Path(r["smt2"]).is_file()]
         sizes = [f.stat().st_size for f in files]
@@ -110,6 +111,8 @@ def saved(models: list[str], root: Path) -> None:
                 name,
                 str(len(obligations)),
                 str(counts["PROVED"]),
+                f"{bases['substantive']}/{bases['immediate']}/{bases['vacuous']}"
+                + (f" ({bases['?']} ?)" if bases["?"] else ""),
                 str(counts["VIOLATED"]),
                 str(counts["HOLDS_WITHIN_BOUNDS"]),
                 str(counts["INCONCLUSIVE"]),
@@ -124,6 +127,7 @@ def saved(models: list[str], root: Path) -> None:
         "model",
         "obligations",
         "PROVED",
+        "subst./immed./vac.",
         "VIOLATED",
         "HOLDS",
         "INCONCL.",

@@ -194,13 +194,14 @@ def prove(
     if not tasks:
         return []
     check_encoded(model)
+    from .basis import decided
     from .legs import prove_leg
 
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
     calls: list[tuple[Callable[..., ProofResult], tuple[Any, ...], dict[str, Any]]] = []
     for task in tasks:
         if isinstance(task, LegSpec):
-            calls.append((prove_leg, (model, task), {"timeout": timeout, "out": out}))
+            calls.append((decided, (prove_leg, model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, Spec):
             note = PAPER_PART_NOTE if model.options.repaired else ""
             written = traces if traces is not None else out / "traces" if out else None
@@ -208,7 +209,7 @@ def prove(
             kwargs = {"timeout": timeout, "out": out, "note": note, "known": known, "given": tuple(given)}
             if corpus:
                 kwargs["corpus"] = corpus_known(paper_part(model), task.key)
-            calls.append((prove_spec, (paper_part(model), task), kwargs))
+            calls.append((decided, (prove_spec, paper_part(model), task), kwargs))
         else:
             calls.append((prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out}))
     results: list[ProofResult | None] = [None] * len(tasks)
@@ -401,7 +402,7 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-ENCODING_VERSION = 10
+ENCODING_VERSION = 11
 """Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
 role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
 initial search over the reals after a non-initial solution, fsync replays activate every robot;
@@ -420,7 +421,11 @@ a finer grid: most of the time went to Python, not z3), its budget counted at 3 
 rate (was 4), a polish repeated at most 3 times per set of free unknowns, and a check's clock limit
 0.1 s above 1.5 times its budget (a sliver of budget stopped by the clock was reported as load),
 and an earlier run's counterexample of a claim without a trace (its row's configuration) replayed
-first, as traces were. Not bumped for the small swarms enumerated after the first round
+first, as traces were; 11: every PROVED row carries its basis (vacuous, immediate, substantive:
+:mod:`fatline_verify.prove.basis`), a row that cannot fire is reported vacuous however its unsat was
+reached, rma-fixed has the ``on-rma`` form (Lemma 3's "a robot on the RMA never leaves it"), and a
+repaired model has obligations for the repairs' own destinations (``repair-align``, ``repair-approach``,
+``repair-contract``). Not bumped for the small swarms enumerated after the first round
 (:mod:`fatline_verify.prove.small`): they find nothing where a row is PROVED (a test runs every
 PROVED row of ``proofs/`` through them), and a VIOLATED row replays its own counterexample first, so
 only an INCONCLUSIVE row can change, which ``--redo-inconclusive`` re-runs. Nor for the shipped

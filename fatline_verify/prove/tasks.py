@@ -20,6 +20,7 @@ from ..schedulers.activation import encoded_schedulers
 from .smt.claims import (
     CLOSER,
     GLOBAL,
+    ON_RMA,
     ONE_MOVER,
     SEEN,
     TWO_MOVERS,
@@ -60,11 +61,13 @@ class ProofResult:
     case: str = "any"
     other: str = ""
     configuration: tuple[str, ...] = ()
-    """For a claim without a trace (``seen``, ``x-nondecreasing``, ``closer``): the replayed
+    """For a claim without a trace (``seen``, ``on-rma``, ``x-nondecreasing``, ``closer``): the replayed
     configuration, r first, as exact ``x,y`` strings in lattice units (radii when q = 1)."""
     decided_by: str = "search"
     """What decided it (:data:`fatline_verify.prove.corpus.DECIDERS`): the search, or a counterexample
     replayed first from the shipped corpus, an earlier run, or ``--known``."""
+    basis: str = ""
+    """For PROVED: ``vacuous``, ``immediate`` or ``substantive`` (:mod:`fatline_verify.prove.basis`)."""
 
     @property
     def key(self) -> str:
@@ -194,6 +197,7 @@ def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: b
             tasks.append(GlobalTask())
         if lemma is Lemma.RMA_FIXED:
             tasks += [Spec.of(lemma, SEEN, c) for c in moving]
+            tasks += [Spec.of(lemma, ON_RMA, c) for c in moving]
         if lemma is Lemma.APPROACH:
             tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
     return tasks
@@ -205,14 +209,37 @@ def _repaired_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
     paper's rules under its readings (:func:`paper_part`; the legs' rightward horizontal rests on
     the latter)."""
     moving = moving_cases(paper_part(model))
+    repairs = repair_cases(model)
     tasks: list[Task] = []
     for lemma in lemmas:
         tasks += leg_specs((lemma,))
         if lemma is Lemma.RMA_FIXED:
             tasks += [Spec.of(lemma, SEEN, c) for c in moving]
+            tasks += [Spec.of(lemma, ON_RMA, c) for c in moving]
+            tasks += [Spec(lemma, form, (c,), repair=k) for form in (SEEN, ON_RMA) for k, c in repairs]
         if lemma is Lemma.APPROACH:
             tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
+            tasks += [Spec(lemma, X_NONDECREASING, (c,), repair=k) for k, c in repairs if k != "contract"]
     return tasks
+
+
+def repair_cases(model: Model) -> list[tuple[str, Case]]:
+    """The repaired rule set's own destinations (:data:`~fatline_verify.prove.smt.claims.REPAIRS`) the model
+    turns on, each with the paper case it replaces: ``align`` and ``contract`` the only-A u I stay,
+    ``approach`` each moving Scenario 4 case. (A vertical contraction keeps x: it has seen and on-rma
+    obligations, no x-nondecreasing one, and makes no horizontal leg.)"""
+    from ..rules.paper.algorithm import Rule
+    from ..rules.repaired.algorithm import SCENARIO_4
+    from ..rules.repaired.options import RepairApproach, RepairStack
+
+    paper = paper_part(model)
+    out: list[tuple[str, Case]] = []
+    if model.options.repair_stack is RepairStack.ALIGN:
+        stays = [c for c in staying_cases(paper) if c.rule is Rule.ONLY_AI]
+        out += [(k, c) for k in ("align", "contract") for c in stays]
+    if model.options.repair_approach is RepairApproach.ON:
+        out += [("approach", c) for c in moving_cases(paper) if c.rule in SCENARIO_4]
+    return out
 
 
 CLOSER_RULES = ("scenario-1", "scenario-2", "scenario-3", "uncovered-search")
