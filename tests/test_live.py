@@ -288,3 +288,42 @@ def test_a_toy_measure_that_does_not_fall_is_violated_by_a_replayed_round(toys, 
     state = tuple(model.to_lattice(tuple(Fraction(v) for v in c.split(","))) for c in got.configuration)
     after = play_round(state, [0], model).after
     assert measure_of(model, after) >= measure_of(model, state)
+
+
+def _rows(model, verdicts):
+    """Rows for every liveness obligation of ``model``: PROVED unless ``verdicts`` says otherwise."""
+    return [
+        {
+            "lemma": t.lemma.value,
+            "form": t.form,
+            "rule": "any",
+            "case": t.case,
+            "verdict": verdicts.get(t.key, "PROVED"),
+        }
+        for t in tasks_for(model, LIVE)
+    ]
+
+
+def test_lemma_level_verdicts_stuck_refutes_a_bad_round_does_not(toys) -> None:
+    from fatline_verify.prove.live import liveness_verdicts
+
+    model = toys["toy-right"]
+    assert liveness_verdicts(model, _rows(model, {})) == {
+        Lemma.PROGRESS: ("PROVED", "every enabledness row PROVED"),
+        Lemma.TERMINATION: ("PROVED", "progress, the measure and its bound, no-collision and connectivity"),
+    }
+    bad_round = liveness_verdicts(model, _rows(model, {"termination/measure-right": "VIOLATED"}))
+    assert bad_round[Lemma.PROGRESS][0] == "PROVED" and bad_round[Lemma.TERMINATION][0] == "NOT PROVED"
+    stuck = liveness_verdicts(model, _rows(model, {"progress/enabled-stay": "VIOLATED"}))
+    assert stuck[Lemma.PROGRESS][0] == stuck[Lemma.TERMINATION][0] == "VIOLATED"
+    open_row = liveness_verdicts(model, _rows(model, {"progress/enabled-right": "INCONCLUSIVE"}))
+    assert open_row[Lemma.PROGRESS][0] == "NOT PROVED" and "enabled-right" in open_row[Lemma.PROGRESS][1]
+    assert liveness_verdicts(model, []) == {}
+
+
+def test_the_paper_measure_without_a_bound_never_gives_termination(paper) -> None:
+    from fatline_verify.prove.live import liveness_verdicts
+
+    got = liveness_verdicts(paper, _rows(paper, {}))
+    assert got[Lemma.PROGRESS][0] == "PROVED"
+    assert got[Lemma.TERMINATION] == ("NOT PROVED", "the measure's bound is not argued")

@@ -29,7 +29,7 @@ from ..model.options import Motion, Scheduler
 from ..model.swarm import initial_problems, is_goal
 from ..rules import registry
 from ..schedulers.round import decide_all
-from .search import Budget, rounds_text
+from .search import Budget
 from .smt.cases import Arith
 from .smt.live_rules import LiveCase, live_cases
 from .smt.liveness import ENABLED, LiveSpec, build_enabled, build_measure, goal_problem, header
@@ -111,19 +111,22 @@ def prove_live(model: Model, spec: LiveSpec, *, timeout: float, out: Path | None
         if found is not None:
             return result(*found)
     config = _config(seen) if seen else ()
-    if seen is None and first.status != "sat":
-        return result(
-            Verdict.INCONCLUSIVE, f"solver: {first.reason} {rounds_text(timeout)}; rerun with a larger --timeout"
-        )
-    searched = f"{len(tries)} lattice solution(s) replayed (q={q}, initial condition's pairs), none a counterexample"
+    end = {"unsat": "then no more", "unknown": "then the budget ran out"}.get(ans.status, "the most it replays")
+    searched = f"the lattice q={q} with the initial condition's pairs: {len(tries)} solution(s) replayed, {end}"
     if enabled and registry.of(model).prover == "paper":
         from .small import SMALL
 
         most = _small_most(SMALL, q)
-        searched += f"; no stuck configuration of 2 to {most} robots in the small swarms at q={q} has r in this case"
+        searched += f"; no stuck configuration of 2 to {most} robots at q={q} (small swarms) has r in this case"
+    if seen is None and first.status != "sat":
+        return result(
+            Verdict.INCONCLUSIVE,
+            f"solver: {first.reason} ({searched}); rerun with a larger --timeout",
+        )
     return result(
         Verdict.INCONCLUSIVE,
-        f"a solution exists ({why or 'not replayed'}); {searched}: the named-witness argument does not decide here",
+        f"a solution exists ({why or 'not replayed'}); {searched}: none a counterexample, the named-witness "
+        "argument does not decide here",
         None,
         config,
     )
@@ -289,4 +292,69 @@ def replay_measure(
     )
 
 
-__all__ = ["measure_of", "prove_live", "replay_measure", "replay_stuck"]
+def liveness_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, tuple[str, str]]:
+    """Lemma-level verdicts of progress and termination from the rows of one model (``{}`` for a rule
+    set without a liveness declaration or without liveness rows), each ``(verdict, why)``:
+
+    - progress (Lemma 2): VIOLATED by a replayed stuck configuration (a row VIOLATED); PROVED when every
+      enabledness row is; otherwise NOT PROVED.
+    - termination: VIOLATED only by a replayed stuck configuration (a run that never reaches the goal);
+      a VIOLATED measure row only leaves it NOT PROVED (one round that does not decrease the measure is
+      not a run that never ends). PROVED when progress is, every measure row is PROVED, the bound is
+      argued (:attr:`~fatline_verify.rules.registry.Liveness.bounded_proved`) and every no-collision and
+      connectivity row present is PROVED (the argument assumes a connected swarm that never collides).
+    """
+    from .tasks import row_key, tasks_for
+
+    declared = registry.of(model).liveness
+    if declared is None:
+        return {}
+    by_key = {row_key(r): r for r in rows}
+    expected = [t.key for t in tasks_for(model, (Lemma.PROGRESS, Lemma.TERMINATION))]
+    enabled = [k for k in expected if k.startswith(f"{Lemma.PROGRESS}/")]
+    measure = [k for k in expected if k.startswith(f"{Lemma.TERMINATION}/")]
+    if not any(k in by_key for k in expected):
+        return {}
+
+    def verdicts(keys: list[str]) -> list[str]:
+        return [by_key[k]["verdict"] if k in by_key else "missing" for k in keys]
+
+    def open_text(keys: list[str]) -> str:
+        left = [k.split("/", 1)[1] for k, v in zip(keys, verdicts(keys), strict=True) if v != "PROVED"]
+        return f"{len(left)} of {len(keys)} rows not PROVED ({', '.join(left[:3])}{', ...' if len(left) > 3 else ''})"
+
+    stuck = [k for k, v in zip(enabled, verdicts(enabled), strict=True) if v == "VIOLATED"]
+    out: dict[Lemma, tuple[str, str]] = {}
+    if stuck:
+        why = f"a replayed stuck configuration ({stuck[0]})"
+        out[Lemma.PROGRESS] = ("VIOLATED", why)
+        out[Lemma.TERMINATION] = ("VIOLATED", why)
+        return out
+    progress_ok = all(v == "PROVED" for v in verdicts(enabled))
+    out[Lemma.PROGRESS] = (
+        ("PROVED", "every enabledness row PROVED") if progress_ok else ("NOT PROVED", open_text(enabled))
+    )
+    safety = [k for k in by_key if k.split("/", 1)[0] in (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)]
+    missing: list[str] = []
+    if not progress_ok:
+        missing.append("progress not proved")
+    if not all(v == "PROVED" for v in verdicts(measure)):
+        missing.append("measure: " + open_text(measure))
+    if not declared.bounded_proved:
+        missing.append("the measure's bound is not argued")
+    if any(by_key[k]["verdict"] != "PROVED" for k in safety):
+        missing.append("a no-collision or connectivity row is not PROVED")
+    if missing:
+        out[Lemma.TERMINATION] = ("NOT PROVED", "; ".join(missing))
+    else:
+        out[Lemma.TERMINATION] = ("PROVED", "progress, the measure and its bound, no-collision and connectivity")
+    return out
+
+
+def liveness_lines(model: Model, rows: Sequence[dict[str, Any]]) -> list[str]:
+    """The lemma-level liveness verdicts as lines for the terminal (none without liveness rows)."""
+    got = liveness_verdicts(model, rows)
+    return [f"{lemma} (lemma): {verdict}: {why}" for lemma, (verdict, why) in got.items()]
+
+
+__all__ = ["liveness_lines", "liveness_verdicts", "measure_of", "prove_live", "replay_measure", "replay_stuck"]
