@@ -2,11 +2,13 @@
 enabledness per decision case (r stays), and the rule set's ranking measure per moving case.
 
 - **enabled** (over the reals): ``unsat`` is PROVED for swarms of every size (the header's
-  argument). Otherwise the model's lattice is searched with the initial condition's pairs; each
-  solution is replayed by the executable model, and only a configuration in which *no* robot moves,
-  which is not a goal and meets the initial condition is a counterexample (VIOLATED: a stuck
-  configuration, so Lemma 2 and termination fail). A solution where r stays but another robot moves
-  is not one: it is blocked and the search goes on; what is left is INCONCLUSIVE, saying so.
+  argument). Otherwise the small swarms (the paper's rules: every initial configuration of a few
+  robots, fewest first, by the executable model alone), then the model's lattice with the initial
+  condition's pairs are searched; each solution is replayed by the executable model, and only a
+  configuration in which *no* robot moves, which is not a goal and meets the initial condition is a
+  counterexample (VIOLATED: a stuck configuration, so Lemma 2 and termination fail). A solution
+  where r stays but another robot moves is not one: it is blocked and the search goes on; what is
+  left is INCONCLUSIVE, saying so.
 - **measure** (on the model's lattice): ``unsat`` is PROVED for every configuration of the lattice,
   of any size. A solution is replayed: r must make the case's move there; the round (r alone, or
   under ``fsync`` every robot that moves) must leave the measure where it was or raise it. From an
@@ -86,6 +88,11 @@ def prove_live(model: Model, spec: LiveSpec, *, timeout: float, out: Path | None
         verdict, why, doc, config = replay_measure(model, spec, first.positions)
         if verdict is Verdict.VIOLATED:
             return result(verdict, why, doc, config)
+    small = enabled and registry.of(model).prover == "paper"
+    if small:  # the fewest robots first: the smallest stuck configuration, by the executable model alone
+        found = small_stuck(model, spec)
+        if found is not None:
+            return result(*found)
     # the model's lattice, with the initial condition's pairs: a counterexample from an initial configuration
     search = build(Arith(q), model, case, initial=True)
     tries: list[Positions] = []
@@ -106,14 +113,10 @@ def prove_live(model: Model, spec: LiveSpec, *, timeout: float, out: Path | None
         why = why or replayed[1]
         seen = seen or ans.positions
         tries.append(ans.positions)
-    if enabled and registry.of(model).prover == "paper":
-        found = small_stuck(model, spec)
-        if found is not None:
-            return result(*found)
     config = _config(seen) if seen else ()
     end = {"unsat": "then no more", "unknown": "then the budget ran out"}.get(ans.status, "the most it replays")
     searched = f"the lattice q={q} with the initial condition's pairs: {len(tries)} solution(s) replayed, {end}"
-    if enabled and registry.of(model).prover == "paper":
+    if small:
         from .small import SMALL
 
         most = _small_most(SMALL, q)
