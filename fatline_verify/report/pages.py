@@ -32,14 +32,7 @@ from .against_pages import against_html, against_markdown
 from .data import ModelReport
 
 RANK = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
-PROVER_LEMMAS = (
-    Lemma.NO_COLLISION,
-    Lemma.CONNECTIVITY,
-    Lemma.RMA_FIXED,
-    Lemma.APPROACH,
-    Lemma.PROGRESS,
-    Lemma.TERMINATION,
-)
+PROVER_LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
 """The prover's lemmas, in its results order (:data:`fatline_verify.prove.prover.LEMMAS`, without z3)."""
 
 VIEWER_JS = """
