@@ -112,7 +112,8 @@ def test_help_states_exit_codes(capsys):
         (["--slots", "0"], "slots='0': expected a whole number"),
         (
             ["--lemma", "happiness"],
-            "lemma='happiness': expected one of no-collision, connectivity, rma-fixed, approach, all",
+            "lemma='happiness': expected one of no-collision, connectivity, rma-fixed, approach, progress, "
+            "termination, liveness, all",
         ),
     ],
 )

@@ -102,12 +102,12 @@ def test_prove_redo_inconclusive_reruns_only_those_rows(tmp_path, monkeypatch):
     monkeypatch.setattr(prover, "prove", counting)
     code = main(["prove", "paper", "--redo-inconclusive", "--out", str(out), "-q"])
     assert code in (0, 1)
-    # rows of obligations the committed file predates (a form added since) are missing too, and rerun
-    unsaved = {t.key for t in prover.tasks_for(load_model("paper"))} - before.keys() - {missing}
-    open_keys = {k for k, row in before.items() if row["verdict"] == "INCONCLUSIVE"} | {missing} | unsaved
-    assert len(open_keys) == 3 + len(unsaved) and set(asked) == open_keys
+    # obligations the committed rows do not have yet (added since proofs/ was generated) are missing too
+    absent = {t.key for t in prover.tasks_for(load_model("paper"))} - before.keys() - {missing}
+    open_keys = {k for k, row in before.items() if row["verdict"] == "INCONCLUSIVE"} | {missing} | absent
+    assert len(open_keys) == 3 + len(absent) and set(asked) == open_keys
     after = _rows(out / "paper" / "results.json")
-    assert after.keys() == before.keys() | {missing} | unsaved
+    assert after.keys() == before.keys() | {missing} | absent
     for key, row in after.items():
         if key in open_keys:
             assert row["reason"] == "fake" and row["verdict"] == "PROVED"

@@ -30,7 +30,14 @@ from .common import (
 
 MAX_SLOTS = 8
 MAX_JOBS = 256
-LEMMA_CHOICES = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
+LEMMA_CHOICES = (
+    Lemma.NO_COLLISION,
+    Lemma.CONNECTIVITY,
+    Lemma.RMA_FIXED,
+    Lemma.APPROACH,
+    Lemma.PROGRESS,
+    Lemma.TERMINATION,
+)
 """The lemmas ``--lemma`` offers: :data:`fatline_verify.prove.prover.LEMMAS`, named here without
 importing z3 when the parser is built (a test keeps the two equal)."""
 DEFAULT_SLOTS, DEFAULT_TIMEOUT = 3, 60.0
@@ -38,6 +45,8 @@ DEFAULT_SLOTS, DEFAULT_TIMEOUT = 3, 60.0
 without importing z3 (a test keeps them equal)."""
 ALL = "all"
 """``--lemma all``: every lemma the prover decides."""
+LIVENESS = "liveness"
+"""``--lemma liveness``: the liveness obligations (progress and termination)."""
 
 
 def cmd_prove(args: argparse.Namespace) -> int:
@@ -46,7 +55,10 @@ def cmd_prove(args: argparse.Namespace) -> int:
 
     model = model_arg(args.model)
     given = [(name, initial_radii(load_trace(name))) for name in args.known]  # a bad file: exit 2, before any work
-    lemmas = LEMMAS if args.lemma == ALL else (Lemma(args.lemma),)
+    if args.lemma == LIVENESS:
+        lemmas: tuple[Lemma, ...] = (Lemma.PROGRESS, Lemma.TERMINATION)
+    else:
+        lemmas = LEMMAS if args.lemma == ALL else (Lemma(args.lemma),)
     tasks = tasks_for(
         model, lemmas, two_movers=args.two_movers
     )  # refuses a scheduler the obligations do not encode, before any work
@@ -96,6 +108,9 @@ def cmd_prove(args: argparse.Namespace) -> int:
     keys = [task_key(t) for t in tasks if store.fresh(t) is not None]
     rows = store.ordered(keys)
     lines = prove_lines(model, rows, out, verbose=args.verbose)
+    from ..prove.live import liveness_lines
+
+    lines += liveness_lines(model, store.ordered())
     if interrupted:
         lines.append(f"INTERRUPTED: {len(rows)} of {len(tasks)} obligations finished and saved in {store.path}")
     emit(lines)  # the verdicts before the --json file: a full disk does not hide them
@@ -123,7 +138,7 @@ def running_note(running: dict[str, float], shown: int = 2) -> str:
 def register(sub: Any) -> None:
     p = add_command(sub, "prove", "prove (for any swarm size) or refute each lemma per decision case with z3")
     add_model_argument(p)
-    p.add_argument("--lemma", choices=[*(lemma.value for lemma in LEMMA_CHOICES), ALL], default=ALL)
+    p.add_argument("--lemma", choices=[*(lemma.value for lemma in LEMMA_CHOICES), LIVENESS, ALL], default=ALL)
     p.add_argument(
         "--timeout",
         type=seconds("timeout"),

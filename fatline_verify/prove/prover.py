@@ -40,6 +40,7 @@ from .smt.claims import (
     Spec,
 )
 from .smt.legs import LegSpec
+from .smt.liveness import LiveSpec
 from .tasks import (
     DEFAULT_SLOTS,
     DEFAULT_TIMEOUT,
@@ -196,12 +197,15 @@ def prove(
     check_encoded(model)
     from .basis import decided
     from .legs import prove_leg
+    from .live import prove_live
 
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
     calls: list[tuple[Callable[..., ProofResult], tuple[Any, ...], dict[str, Any]]] = []
     for task in tasks:
         if isinstance(task, LegSpec):
             calls.append((decided, (prove_leg, model, task), {"timeout": timeout, "out": out}))
+        elif isinstance(task, LiveSpec):
+            calls.append((prove_live, (model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, Spec):
             note = PAPER_PART_NOTE if model.options.repaired else ""
             written = traces if traces is not None else out / "traces" if out else None
@@ -252,7 +256,7 @@ def overrun_result(task: Task, seconds: float, timeout: float, out: Path | None)
     path = (out / lemma / name).as_posix() if out is not None else ""
     if isinstance(task, GlobalTask):
         return ProofResult(task.lemma, task.form, "any", Verdict.INCONCLUSIVE, 0, False, seconds, reason, path)
-    if isinstance(task, LegSpec):
+    if isinstance(task, LegSpec | LiveSpec):
         rule, case, other = "any", task.name, task.other
     else:
         rule, case, other = task.mine[0].rule.value, task.name, task.other_name

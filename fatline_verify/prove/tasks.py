@@ -28,6 +28,8 @@ from .smt.claims import (
     Spec,
 )
 from .smt.legs import LegSpec, leg_specs, missing_repairs
+from .smt.live_rules import live_cases
+from .smt.liveness import LiveSpec, live_specs
 
 ENCODED = encoded_schedulers()
 """The schedulers the obligations encode: every mover decides on one shared snapshot."""
@@ -86,8 +88,12 @@ DEFAULT_SLOTS = 3
 DEFAULT_TIMEOUT = 60.0
 """Solver seconds per obligation, unless asked otherwise."""
 
-LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
-"""The lemmas the prover decides, in results order."""
+LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH, Lemma.PROGRESS, Lemma.TERMINATION)
+"""The lemmas the prover decides, in results order (progress and termination: the liveness
+obligations, for a rule set that declares them, :mod:`fatline_verify.prove.smt.liveness`)."""
+
+LIVENESS = (Lemma.PROGRESS, Lemma.TERMINATION)
+"""The lemmas of the liveness obligations."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -102,8 +108,9 @@ class GlobalTask:
         return f"{self.lemma}/{GLOBAL}-any"
 
 
-Task = Spec | GlobalTask | LegSpec
-"""An obligation: a decision case of the paper's rules, the global form, or a repaired rule set's leg."""
+Task = Spec | GlobalTask | LegSpec | LiveSpec
+"""An obligation: a decision case of the paper's rules, the global form, a repaired rule set's leg,
+or a liveness obligation."""
 
 
 def rule_groups(cases: Sequence[Case]) -> list[tuple[str, tuple[Case, ...]]]:
@@ -119,7 +126,7 @@ def check_encoded(model: Model) -> None:
     paper's rules in place of a repaired rule set the leg obligations do not cover, never a rule set
     without an encoding of its own (:attr:`fatline_verify.rules.registry.RuleSet.prover`)."""
     rule_set = registry.of(model)
-    if rule_set.prover not in ENCODINGS:
+    if rule_set.prover not in ENCODINGS and rule_set.liveness is None:
         raise NotEncodedModel(
             f"rules={rule_set.name!r}: fatline prove has no encoding of this rule set (it encodes "
             f"{', '.join(ENCODINGS.values())}); expected a rule set it encodes. Use fatline check {model.name}"
@@ -177,8 +184,18 @@ def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: b
     ``two_movers``: also the two-mover obligations (one per pair of rules; searched on the lattices
     only, as their real form is beyond the budgets tried), which ``fatline prove --two-movers`` asks for."""
     check_encoded(model)
+    live = _live_tasks(model, lemmas)
+    if registry.of(model).prover not in ENCODINGS:  # liveness declared, safety not encoded
+        safety = [lemma for lemma in lemmas if lemma not in LIVENESS]
+        if safety and tuple(lemmas) != LEMMAS:
+            raise NotEncodedModel(
+                f"rules={model.rules!r}: fatline prove encodes only this rule set's liveness obligations (it declares "
+                "no safety encoding); expected --lemma progress, termination or liveness. "
+                f"Use fatline check {model.name}"
+            )
+        return live
     if model.options.repaired:
-        return _repaired_tasks(model, lemmas)
+        return _repaired_tasks(model, lemmas) + live
     scheduler = model.options.scheduler
     moving = moving_cases(model)
     stays = tuple(staying_cases(model)) if scheduler is Scheduler.FSYNC else ()
@@ -200,7 +217,23 @@ def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: b
             tasks += [Spec.of(lemma, ON_RMA, c) for c in moving]
         if lemma is Lemma.APPROACH:
             tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
-    return tasks
+    return tasks + live
+
+
+def _live_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
+    """The liveness obligations of ``lemmas`` for a rule set that declares them. Asked for by name
+    (``--lemma progress``, ``termination``) of one that does not: refused (exit 2)."""
+    asked = tuple(lemma for lemma in lemmas if lemma in LIVENESS)
+    if not asked:
+        return []
+    if registry.of(model).liveness is None:
+        if set(lemmas) <= set(LIVENESS):
+            raise NotEncodedModel(
+                f"rules={model.rules!r}: the rule set declares no liveness obligations (rules/registry.py, "
+                f"RuleSet.liveness); expected a rule set that does. Use fatline check {model.name}"
+            )
+        return []
+    return list(live_specs(model, live_cases(model), asked))
 
 
 def _repaired_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
