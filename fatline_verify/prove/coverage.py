@@ -181,9 +181,9 @@ TABLE: tuple[Entry, ...] = (
         "repair-contract among them); a leg goes no farther than its destination",
     ),
     Entry(str(Lemma.APPROACH), "legs", (X_STEP, REACHES), "liveness: needs a measure, not a step fact"),
-    _step("progress", "enabled"),
+    _step(str(Lemma.PROGRESS), "enabled"),
     Entry(
-        "termination",
+        str(Lemma.TERMINATION),
         "",
         (
             Part("measure", ("measure",), "a measure that decreases"),
