@@ -305,7 +305,7 @@ def _rows(model, verdicts):
 
 
 def test_lemma_level_verdicts_stuck_refutes_a_bad_round_does_not(toys) -> None:
-    from fatline_verify.prove.live import liveness_verdicts
+    from fatline_verify.prove.coverage import liveness_verdicts
 
     model = toys["toy-right"]
     assert liveness_verdicts(model, _rows(model, {})) == {
@@ -322,7 +322,7 @@ def test_lemma_level_verdicts_stuck_refutes_a_bad_round_does_not(toys) -> None:
 
 
 def test_the_paper_measure_without_a_bound_never_gives_termination(paper) -> None:
-    from fatline_verify.prove.live import liveness_verdicts
+    from fatline_verify.prove.coverage import liveness_verdicts
 
     got = liveness_verdicts(paper, _rows(paper, {}))
     assert got[Lemma.PROGRESS][0] == "PROVED"

@@ -108,9 +108,6 @@ def cmd_prove(args: argparse.Namespace) -> int:
     keys = [task_key(t) for t in tasks if store.fresh(t) is not None]
     rows = store.ordered(keys)
     lines = prove_lines(model, rows, out, verbose=args.verbose)
-    from ..prove.live import liveness_lines
-
-    lines += liveness_lines(model, store.ordered())
     if interrupted:
         lines.append(f"INTERRUPTED: {len(rows)} of {len(tasks)} obligations finished and saved in {store.path}")
     emit(lines)  # the verdicts before the --json file: a full disk does not hide them

@@ -24,13 +24,14 @@ a fair round scheduler); until the prover writes rows of those forms it is NOT E
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 from ..lemmas.properties import Lemma
 from ..model.config import Model
 from ..model.options import Scheduler
+from ..rules import registry
 from .basis import counts_text
 
 PROVED, VIOLATED, NOT_PROVED, NOT_ENCODED = "PROVED", "VIOLATED", "NOT PROVED", "NOT ENCODED"
@@ -116,15 +117,6 @@ def legs_lemma(lemma: Lemma | str, parts: tuple[Part, ...], argument: str) -> En
     return Entry(str(lemma), "legs", (*parts, RIGHTWARD), argument)
 
 
-def _step(lemma: str, part: str) -> Entry:
-    return Entry(
-        lemma,
-        "",
-        (Part(part, (part,), f"{lemma}'s {part} obligation"),),
-        f"{lemma} is liveness; its obligations are not encoded yet",
-    )
-
-
 ONE_COLLIDE = Part("one-mover", ("one-mover",), "r's move never comes within 2 of a robot at rest", refutes=True)
 TWO_COLLIDE = Part(
     "two-movers", ("two-movers",), "two robots moving in one round never come within 2", True, _two_movers
@@ -181,16 +173,6 @@ TABLE: tuple[Entry, ...] = (
         "repair-contract among them); a leg goes no farther than its destination",
     ),
     Entry(str(Lemma.APPROACH), "legs", (X_STEP, REACHES), "liveness: needs a measure, not a step fact"),
-    _step(str(Lemma.PROGRESS), "enabled"),
-    Entry(
-        str(Lemma.TERMINATION),
-        "",
-        (
-            Part("measure", ("measure",), "a measure that decreases"),
-            Part("enabled", ("enabled",), "some robot is enabled"),
-        ),
-        "rests on safety, rigid moves and a fair round scheduler",
-    ),
 )
 """Every lemma under each encoding (``""``: whichever)."""
 
@@ -307,13 +289,84 @@ def encoding_of(model: Model) -> str:
     return "legs" if model.options.repaired else "paper"
 
 
+LIVENESS = (str(Lemma.PROGRESS), str(Lemma.TERMINATION))
+"""The liveness lemmas: judged by :func:`liveness_verdicts` (their own rules), not by a table entry."""
+
+
+def liveness_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, tuple[str, str]]:
+    """Lemma-level verdicts of progress and termination from the rows of one model (``{}`` for a rule
+    set without a liveness declaration or without liveness rows), each ``(verdict, why)``:
+
+    - progress (Lemma 2): VIOLATED by a replayed stuck configuration (a row VIOLATED); PROVED when every
+      enabledness row is; otherwise NOT PROVED.
+    - termination: VIOLATED only by a replayed stuck configuration (a run that never reaches the goal);
+      a VIOLATED measure row only leaves it NOT PROVED (one round that does not decrease the measure is
+      not a run that never ends). PROVED when progress is, every measure row is PROVED, the bound is
+      argued (:attr:`~fatline_verify.rules.registry.Liveness.bounded_proved`) and every no-collision and
+      connectivity row present is PROVED (the argument assumes a connected swarm that never collides).
+    """
+    from .tasks import row_key, tasks_for
+
+    declared = registry.of(model).liveness
+    if declared is None:
+        return {}
+    by_key = {row_key(r): r for r in rows}
+    expected = [t.key for t in tasks_for(model, (Lemma.PROGRESS, Lemma.TERMINATION))]
+    enabled = [k for k in expected if k.startswith(f"{Lemma.PROGRESS}/")]
+    measure = [k for k in expected if k.startswith(f"{Lemma.TERMINATION}/")]
+    if not any(k in by_key for k in expected):
+        return {}
+
+    def verdicts(keys: list[str]) -> list[str]:
+        return [by_key[k]["verdict"] if k in by_key else "missing" for k in keys]
+
+    def open_text(keys: list[str]) -> str:
+        left = [k.split("/", 1)[1] for k, v in zip(keys, verdicts(keys), strict=True) if v != "PROVED"]
+        return f"{len(left)} of {len(keys)} rows not PROVED ({', '.join(left[:3])}{', ...' if len(left) > 3 else ''})"
+
+    stuck = [k for k, v in zip(enabled, verdicts(enabled), strict=True) if v == "VIOLATED"]
+    out: dict[Lemma, tuple[str, str]] = {}
+    if stuck:
+        why = f"a replayed stuck configuration ({stuck[0]})"
+        out[Lemma.PROGRESS] = ("VIOLATED", why)
+        out[Lemma.TERMINATION] = ("VIOLATED", why)
+        return out
+    progress_ok = all(v == "PROVED" for v in verdicts(enabled))
+    out[Lemma.PROGRESS] = (
+        ("PROVED", "every enabledness row PROVED") if progress_ok else ("NOT PROVED", open_text(enabled))
+    )
+    safety = [k for k in by_key if k.split("/", 1)[0] in (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)]
+    missing: list[str] = []
+    if not progress_ok:
+        missing.append("progress not proved")
+    if not all(v == "PROVED" for v in verdicts(measure)):
+        missing.append("measure: " + open_text(measure))
+    if not declared.bounded_proved:
+        missing.append("the measure's bound is not argued")
+    if any(by_key[k]["verdict"] != "PROVED" for k in safety):
+        missing.append("a no-collision or connectivity row is not PROVED")
+    if missing:
+        out[Lemma.TERMINATION] = ("NOT PROVED", "; ".join(missing))
+    else:
+        out[Lemma.TERMINATION] = ("PROVED", "progress, the measure and its bound, no-collision and connectivity")
+    return out
+
+
 def lemma_verdicts(
     model: Model, rows: list[dict[str, Any]], lemmas: tuple[str, ...] | None = None
 ) -> list[LemmaVerdict]:
     """Every lemma with rows in ``rows`` (or each of ``lemmas``), judged by its table entry."""
     wanted = lemmas if lemmas is not None else tuple(dict.fromkeys(str(r.get("lemma")) for r in rows))
     out = []
+    live: dict[Lemma, tuple[str, str]] | None = None
     for lemma in wanted:
+        if lemma in LIVENESS:
+            live = live if live is not None else liveness_verdicts(model, rows)
+            if Lemma(lemma) in live:
+                verdict, why = live[Lemma(lemma)]
+                mine = [r for r in rows if r.get("lemma") == lemma]
+                out.append(LemmaVerdict(lemma, verdict, why, len(mine), _count(mine)))
+            continue
         entry = entry_for(lemma, encoding_of(model))
         if entry is None:
             continue
@@ -334,5 +387,6 @@ __all__ = [
     "judge",
     "legs_lemma",
     "lemma_verdicts",
+    "liveness_verdicts",
     "paper_lemma",
 ]
