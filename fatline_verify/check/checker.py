@@ -446,10 +446,9 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
     expanded = ex.expanded
     extras = registered()
     for lemma in (*SAFETY, *extras):
-        hits = np.nonzero(expanded[ex.edge_src] & ((ex.edge_flags & lemma.flag) != 0))[0]
-        if len(hits):
-            first = hits[np.lexsort((ex.edge_action[hits], ex.edge_src[hits]))[0]]
-            doc = transition_witness(ex, int(first), lemma)
+        first = ex.least_violating(lemma.flag)  # the search's summaries: the least (source, action)
+        if first is not None:
+            doc = transition_witness(ex, *first, lemma)
             out[lemma] = _result(ex, lemma, Verdict.VIOLATED, f"a violating {ex.system.step_word}", doc)
         else:
             out[lemma] = _bounded(ex, lemma, liveness=False)

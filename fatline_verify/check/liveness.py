@@ -61,8 +61,7 @@ def fair_cycles(ex: Exploration, nodes: np.ndarray) -> list[Lasso]:
     Only edges between such states count, and only edges the search follows (non-violating unless
     ``after_violation == "continue"``).
     """
-    ok = (ex.edge_dst >= 0) & nodes[ex.edge_src] & nodes[np.maximum(ex.edge_dst, 0)]
-    src, dst, mask = ex.edge_src[ok], ex.edge_dst[ok], ex.edge_action[ok]
+    src, dst, mask = ex.followed_edges(nodes)  # recomputed: the search keeps no transitions
     keep = _trim(src, dst, ex.n_states)
     src, dst, mask = src[keep], dst[keep], mask[keep]
     if not len(src):
