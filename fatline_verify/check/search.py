@@ -39,7 +39,7 @@ import numpy as np
 
 from ..lemmas.registry import FLAG_BITS
 from ..model.config import Model
-from ..resources import BYTES_PER_STATE, PEAK_FACTOR
+from ..resources import PEAK_FACTOR
 from ..schedulers.base import Codec, Engine, TransitionSystem
 from .engines import engine_for
 from .shard import COLUMNS, SUMMARY_COUNTS, Level, Shard, enabled_dtype, fold_summaries, followed, owners
@@ -541,9 +541,7 @@ def _next_level_estimate(rec: _Records, frontier: int) -> int:
     """Bytes the next level will hold at its peak: its states' columns, its routed successors (key,
     source, action) and the visited set's copy in the de-duplication, for a level as much larger than
     the frontier as the last one was than the one before (at least as large)."""
-    if len(rec.keys) < 2:
-        return BYTES_PER_STATE * frontier
-    growth = max(1.0, len(rec.keys[-1]) / max(1, len(rec.keys[-2])))
+    growth = 1.0 if len(rec.keys) < 2 else max(1.0, len(rec.keys[-1]) / max(1, len(rec.keys[-2])))
     key = rec.keys[-1].itemsize
     per_state = 3 * (key + 8) + 2 * key + 10
     return int(per_state * frontier * growth)
