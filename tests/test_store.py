@@ -128,3 +128,30 @@ def test_the_store_keeps_few_bytes_a_state():
     ex = _explore(load_model("paper"), 4, 7)
     assert ex.nbytes == 18 * ex.n_states
     assert "edges" not in ex._cache  # nothing recomputed them yet
+
+
+def test_kept_answers_give_the_same_check_and_are_read_again(tmp_path, monkeypatch):
+    """A check with the model's answers kept by an earlier run equals one that asks the model; the
+    engine then asks nothing new; a file that does not match its digest is ignored."""
+    from fatline_verify.check import answers, compiled
+
+    model = load_model("paper")
+    fresh = check(model, (4, 4), (6, 6))
+    monkeypatch.setenv(answers.ENV, str(tmp_path / "answers"))
+    first = check(model, (4, 4), (6, 6))
+    (kept,) = (tmp_path / "answers").glob("*.npz")
+    asked = []
+    original = compiled.CompiledEngine._learn_decisions
+    monkeypatch.setattr(compiled.CompiledEngine, "_learn_decisions", lambda self, k, n: (asked.append(len(k)), original(self, k, n)))
+    second = check(model, (4, 4), (6, 6))
+    assert not asked  # every decision came from the kept file
+    for got in (first, second):
+        assert [(r.lemma, r.verdict, r.reason, r.witness) for r in got.results] == [
+            (r.lemma, r.verdict, r.reason, r.witness) for r in fresh.results
+        ]
+    data = bytearray(kept.read_bytes())
+    data[-10] ^= 1
+    kept.write_bytes(bytes(data))
+    assert answers.load_answers(kept) is None
+    third = check(model, (4, 4), (6, 6))
+    assert asked and [r.verdict for r in third.results] == [r.verdict for r in fresh.results]

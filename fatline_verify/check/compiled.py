@@ -427,6 +427,32 @@ class CompiledEngine:
         self.decisions = HashTable(3)  # dx, dy, corner kind
         self.pairs = HashTable(1)  # collides?
         self._tables: dict[int, _Tables] = {}
+        self._counts: set[int] = set()
+        self._kept = (0, 0)
+
+    # --- answers kept between runs (:mod:`.answers`) ---------------------------------------------
+    def _remember(self, n: int) -> None:
+        """On the first batch: the answers an earlier run for this model and robot count kept."""
+        from .answers import answers_path, load_answers
+
+        self._counts.add(n)
+        got = load_answers(answers_path(self.model, n)) if len(self._counts) == 1 and not len(self.decisions) else None
+        if got is not None:
+            for table, rows in ((self.decisions, got["decisions"]), (self.pairs, got["pairs"])):
+                if len(rows):
+                    table.insert(rows[:, 0], rows[:, 1:])
+        self._kept = (len(self.decisions), len(self.pairs))
+
+    def save_answers(self) -> None:
+        """Keep the answers for the next run (one robot count per file; nothing new, nothing written)."""
+        from .answers import answers_path, save_answers
+
+        if len(self._counts) != 1 or (len(self.decisions), len(self.pairs)) == self._kept:
+            return
+        (n,) = self._counts
+        d, p = self.decisions.slots, self.pairs.slots
+        save_answers(answers_path(self.model, n), d[d[:, 0] != -1], p[p[:, 0] != -1])
+        self._kept = (len(self.decisions), len(self.pairs))
 
     # --- per robot count -----------------------------------------------------------------------
     def _tables_for(self, n: int) -> _Tables:
@@ -501,6 +527,8 @@ class CompiledEngine:
         m, n, _ = states.shape
         if self.cell_bits * max(n - 1, 1) > 63:
             raise ValueError(f"view radius {self.reach} with {n} robots does not pack snapshots into 63 bits")
+        if n not in self._counts:
+            self._remember(n)
         tables = self._tables_for(n)
         result, n_snap, n_pair, err, miss_snap, miss_pair = self._run_analyse(states, tables)
         rows = np.arange(m)

@@ -525,6 +525,8 @@ def explore_keys(
     expander = None
     if own_pool:
         expander = pool.shards[0]  # type: ignore[attr-defined]
+        if limit is Limit.NONE and hasattr(expander.engine, "save_answers"):
+            expander.engine.save_answers()  # the model's answers, for the next run (:mod:`.answers`)
         expander.seed(np.zeros(0, dtype=codec.dtype), np.zeros(0, dtype=codec.dtype), np.zeros(0, dtype=np.int64))
         pool.close()
     ex = _build(system, n, bound, engine_name, codec, rec, limit, needed, after_violation)
