@@ -40,7 +40,7 @@ from numba import njit
 
 from ..lemmas.properties import Lemma
 from ..model.config import Model
-from ..model.lattice import KeyCodec
+from ..model.lattice import KeyCodec, RankedCodec
 from ..model.options import Goal
 from ..rules.registry import decider
 from ..schedulers.base import Expansion, KeyExpansion
@@ -52,6 +52,31 @@ _GOALS = {Goal.VERTICAL_LINE: 0, Goal.ANY_LINE: 1, Goal.LINE_MEETS_DISCS: 2}
 
 
 # --- per-state analysis -------------------------------------------------------------------------
+@njit(cache=True)
+def _decode_ranked(keys: np.ndarray, n: int, h: int, cum: np.ndarray) -> np.ndarray:
+    """Canonical states ``(m, n, 2)`` of ranked keys (as :meth:`RankedCodec.decode`)."""
+    out = np.empty((len(keys), n, 2), dtype=np.int64)
+    top = cum.shape[1] - 1
+    for s in range(len(keys)):
+        rest = keys[s]
+        prev = 0
+        for i in range(n):
+            target = rest + cum[i, prev]
+            lo, hi = prev, top  # the largest d with cum[i, d] <= target
+            while lo < hi:
+                mid = (lo + hi + 1) // 2
+                if cum[i, mid] <= target:
+                    lo = mid
+                else:
+                    hi = mid - 1
+            rest -= cum[i, lo] - cum[i, prev]
+            code = lo - i
+            out[s, i, 0] = code // h
+            out[s, i, 1] = code % h
+            prev = lo + 1
+    return out
+
+
 @njit(cache=True)
 def _decode(keys: np.ndarray, n: int, bits: int, h: int) -> np.ndarray:
     """Canonical states ``(m, n, 2)`` of codec keys (as :meth:`KeyCodec.decode`)."""
@@ -279,6 +304,7 @@ def _expand(
     w: int,
     h: int,
     bits: int,
+    cum: np.ndarray,
     src: np.ndarray,
     action: np.ndarray,
     flags: np.ndarray,
@@ -354,8 +380,15 @@ def _expand(
                             k -= 1
                         codes[k] = code
                     key = 0
-                    for i in range(n):
-                        key = (key << bits) | codes[i]
+                    if cum.shape[0]:  # ranked (:class:`RankedCodec`): the lexicographic rank of the codes
+                        prev = 0
+                        for i in range(n):
+                            d = codes[i] + i
+                            key += cum[i, d] - cum[i, prev]
+                            prev = d + 1
+                    else:
+                        for i in range(n):
+                            key = (key << bits) | codes[i]
                     keys[t] = key
                     fits[t] = True
                 else:
@@ -566,11 +599,12 @@ class CompiledEngine:
         keys = np.empty(t if want_keys else 0, dtype=np.int64)
         fits = np.empty(t if want_keys else 0, dtype=np.bool_)
         w, h, bits = (codec.w, codec.h, codec.bits) if codec is not None else (0, 0, 0)
+        cum = codec.cum if isinstance(codec, RankedCodec) else np.zeros((0, 1), dtype=np.int64)
         _expand(
             states, an.dest, an.enabled, an.coll, an.conn, tables.vstart, tables.vmasks, offsets,
             tables.pi, tables.pj, self.view2,
             Lemma.NO_COLLISION.flag, Lemma.CONNECTIVITY.flag, Lemma.RMA_FIXED.flag,
-            not want_keys, want_keys, w, h, bits,
+            not want_keys, want_keys, w, h, bits, cum,
             src, action, flags, after, keys, fits,
         )  # fmt: skip
         return src, action, flags, after, keys, fits
@@ -588,7 +622,10 @@ class CompiledEngine:
         keys in ``codec``: ``expand(codec.decode(keys))`` followed by canonical form, bound check and
         encoding, without materialising the successors."""
         keys = np.ascontiguousarray(keys, dtype=np.int64)
-        states = _decode(keys, codec.n, codec.bits, codec.h)
+        if isinstance(codec, RankedCodec):
+            states = _decode_ranked(keys, codec.n, codec.h, codec.cum)
+        else:
+            states = _decode(keys, codec.n, codec.bits, codec.h)
         an, tables = self._analyse(states)
         src, action, flags, _, succ, fits = self._run_expand(states, an, tables, codec)
         return KeyExpansion(an.enabled, an.goal, src, action, succ, flags, fits, np.ones(len(src), dtype=bool))
