@@ -466,30 +466,36 @@ def explore_keys(
     if not saved.load(rec):
         rec.add_level(initial, np.full(len(initial), -1, dtype=np.int64), np.zeros(len(initial), dtype=np.int32))
         saved.start(rec)
-    visited = np.concatenate(rec.keys)
-    frontier = rec.keys[-1]
+    visited = np.concatenate(rec.keys) if len(rec.keys) > 1 else np.asarray(rec.keys[0])
+    frontier = np.asarray(rec.keys[-1])
     frontier_ids = np.arange(len(visited) - len(frontier), len(visited), dtype=np.int64)
     limit, needed = Limit.NONE, 0
-    owner_all, owner_front = owners(visited, count), owners(frontier, count)
-    pool.map(
-        "seed",
-        [
-            (np.sort(visited[owner_all == o]), frontier[owner_front == o], frontier_ids[owner_front == o])
-            for o in range(count)
-        ],
-    )
+    if count == 1:  # no copies: the shard's visited set is sorted keys, the frontier its last level
+        pool.map("seed", [(np.sort(visited) if len(rec.keys) > 1 else visited, frontier, frontier_ids)])
+    else:
+        owner_all, owner_front = owners(visited, count), owners(frontier, count)
+        pool.map(
+            "seed",
+            [
+                (np.sort(visited[owner_all == o]), frontier[owner_front == o], frontier_ids[owner_front == o])
+                for o in range(count)
+            ],
+        )
+        del owner_all, owner_front
+    del visited
     total = sum(len(k) for k in rec.keys)
     level = len(rec.keys) - 1
     while len(frontier) and limit is Limit.NONE:
-        held = rec.nbytes() + sum(pool.map("visited_bytes", [()] * count))
         if max_states is not None and total > max_states:
             limit = Limit.MAX_STATES
             break
-        projected = int((held + _next_level_estimate(rec, len(frontier))) * PEAK_FACTOR)
+        visited_bytes = sum(pool.map("visited_bytes", [()] * count))
+        held = rec.nbytes() + visited_bytes
+        projected = int((held + _next_level_estimate(rec, len(frontier), visited_bytes)) * PEAK_FACTOR)
         if max_bytes is not None and projected > max_bytes and rec.disk is None:
             rec.to_disk()  # the levels move to disk: the next level may fit that way
-            held = rec.nbytes() + sum(pool.map("visited_bytes", [()] * count))
-            projected = int((held + _next_level_estimate(rec, len(frontier))) * PEAK_FACTOR)
+            held = rec.nbytes() + visited_bytes
+            projected = int((held + _next_level_estimate(rec, len(frontier), visited_bytes)) * PEAK_FACTOR)
         if max_bytes is not None and projected > max_bytes:
             limit, needed = Limit.MAX_MEMORY, projected
             break
@@ -539,14 +545,16 @@ def _tick(progress: ProgressTick, level: int, states: int, done: int, frontier: 
     progress(level, done, frontier, states)
 
 
-def _next_level_estimate(rec: _Records, frontier: int) -> int:
-    """Bytes the next level will hold at its peak: its states' columns, its routed successors (key,
-    source, action) and the visited set's copy in the de-duplication, for a level as much larger than
-    the frontier as the last one was than the one before (at least as large)."""
+def _next_level_estimate(rec: _Records, frontier: int, visited_bytes: int) -> int:
+    """Bytes the next level adds at its peak, for a level as much larger than the frontier as the last
+    one was than the one before (at least as large): per frontier state its id, enabled and goal (6)
+    and its candidate successors (about 1.5, 16 bytes each); per new state the candidates' sorted
+    set and its sort (40), the new level's columns (16) and its key and mask in the merged visited
+    set (9); and a copy of the visited set in the merge."""
     growth = 1.0 if len(rec.keys) < 2 else max(1.0, len(rec.keys[-1]) / max(1, len(rec.keys[-2])))
     key = rec.keys[-1].itemsize
-    per_state = 3 * (key + 8) + 2 * key + 10
-    return int(per_state * frontier * growth)
+    new = frontier * growth
+    return int(frontier * (6 + 1.5 * (key + 8)) + new * (40 + 16 + key + 1) + visited_bytes)
 
 
 def _build(

@@ -188,30 +188,30 @@ class Shard:
         per state its enabled robots and goal, the transitions folded into a summary as they come, and
         the followed successors routed to their owners."""
         ids, enabled, goal, summaries = [], [], [], []
-        ck_parts, cs_parts, ca_parts = [], [], []
+        ck, cs, ca = np.zeros(0, dtype=self.codec.dtype), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int32)
+        parts: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
+        pending = 0
         for tr in self._batches(self.frontier, self.frontier_ids, batch, progress):
-            ids.append(tr.ids)
+            ids.append(tr.ids.astype(np.int32) if len(tr.ids) and tr.ids[-1] < 2**31 - 1 else tr.ids)
             enabled.append(tr.enabled)
             goal.append(tr.goal)
             summaries.append(summarise(tr.src, tr.action, tr.flags, tr.fits, tr.exact, self.after_violation))
             follow = followed(tr.fits, tr.flags, self.after_violation)
             # A key's first occurrence is its least (source, action): batches ascend, so do their firsts.
-            ck, first = np.unique(tr.key, return_index=True)
-            ck_parts.append(ck)
-            cs_parts.append(tr.src[follow][first].astype(np.int64))
-            ca_parts.append(tr.action[follow][first])
+            bk, first = np.unique(tr.key, return_index=True)
+            bs = tr.src[follow][first]
+            parts.append((bk, bs.astype(np.int32) if len(bs) and bs.max() < 2**31 - 1 else bs, tr.action[follow][first]))
+            pending += len(bk)
             del tr
-        ck = _concat(ck_parts, self.codec.dtype)
-        cs, ca = _concat(cs_parts, np.int64), _concat(ca_parts, np.int32)
-        del ck_parts, cs_parts, ca_parts
-        if len(ids) > 1:
-            order = np.lexsort((ca, cs, ck))
-            ck, cs, ca = ck[order], cs[order], ca[order]
-            first = np.ones(len(ck), dtype=bool)
-            first[1:] = ck[1:] != ck[:-1]
-            ck, cs, ca = ck[first], cs[first], ca[first]
+            if pending > _CONSOLIDATE:  # bound the level's candidates: fold them into one sorted set
+                ck, cs, ca = _first_of(ck, cs, ca, parts, self.codec.dtype)
+                parts, pending = [], 0
+        ck, cs, ca = _first_of(ck, cs, ca, parts, self.codec.dtype)
+        del parts
         owner = owners(ck, self.count)
         routed = [(ck[owner == o], cs[owner == o], ca[owner == o]) for o in range(self.count)]
+        if self.count == 1:
+            routed = [(ck, cs, ca)]
         return Level(
             _concat(ids, np.int64),
             _concat(enabled, enabled_dtype(self.codec.n)),
@@ -243,9 +243,12 @@ class Shard:
     def merge(self, parts: list[tuple[np.ndarray, np.ndarray, np.ndarray]]) -> tuple[np.ndarray, ...]:
         """De-duplicate the candidates routed here: the new keys (sorted), each with its least
         ``(source id, action)``; they join the visited set. The frontier waits for :meth:`assign`."""
-        ck = _concat([p[0] for p in parts], self.codec.dtype)
-        cs = _concat([p[1] for p in parts], np.int64)
-        ca = _concat([p[2] for p in parts], np.int64)
+        if len(parts) == 1:
+            ck, cs, ca = parts[0]
+        else:
+            ck = _concat([p[0] for p in parts], self.codec.dtype)
+            cs = _concat([p[1] for p in parts], np.int64)
+            ca = _concat([p[2] for p in parts], np.int64)
         if len(parts) > 1:
             order = np.lexsort((ca, cs, ck))
             ck, cs, ca = ck[order], cs[order], ca[order]
@@ -256,8 +259,7 @@ class Shard:
             pos = np.minimum(np.searchsorted(self.visited, ck), len(self.visited) - 1)
             new = self.visited[pos] != ck
             ck, cs, ca = ck[new], cs[new], ca[new]
-        merged = np.concatenate([self.visited, ck])
-        self.visited = np.sort(merged, kind="stable" if merged.dtype == np.int64 else None)  # two sorted runs
+        self.visited = _merged(self.visited, ck)
         self.frontier = ck
         return ck, cs, ca
 
@@ -287,6 +289,40 @@ def _in_action_order(col: dict[str, np.ndarray], after_violation: str) -> None:
     for name in ("src", "action", "flags", "fits", "exact"):
         col[name] = col[name][order]
     col["key"] = full[order][follow[order]]
+
+
+_CONSOLIDATE = 1 << 23
+"""Candidate successors a level gathers before folding them into its sorted set (bounds the peak)."""
+
+
+def _first_of(
+    ck: np.ndarray, cs: np.ndarray, ca: np.ndarray, parts: list[tuple[np.ndarray, ...]], dtype: object
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The sorted set of ``ck`` and the keys of ``parts`` (later ones after), each key once with its
+    first ``(source, action)`` in that order (which is its least: sources ascend)."""
+    if not parts:
+        return ck, cs, ca
+    if len(parts) == 1 and not len(ck):
+        return parts[0]  # type: ignore[return-value]
+    keys = np.concatenate([ck, *[p[0] for p in parts]])
+    src = np.concatenate([cs.astype(np.int64, copy=False), *[p[1].astype(np.int64, copy=False) for p in parts]])
+    act = np.concatenate([ca, *[p[2] for p in parts]])
+    keys, first = np.unique(keys, return_index=True)  # stable: the first occurrence of each key
+    src = src[first]
+    return keys, src.astype(np.int32) if len(src) and src.max() < 2**31 - 1 else src, act[first]
+
+
+def _merged(visited: np.ndarray, new: np.ndarray) -> np.ndarray:
+    """Two sorted arrays of distinct keys as one, without sorting again (peak: the two and the result)."""
+    if not len(new):
+        return visited
+    at = np.searchsorted(visited, new) + np.arange(len(new))
+    out = np.empty(len(visited) + len(new), dtype=visited.dtype)
+    rest = np.ones(len(out), dtype=bool)
+    rest[at] = False
+    out[at] = new
+    out[rest] = visited
+    return out
 
 
 def followed(fits: np.ndarray, flags: np.ndarray, after_violation: str) -> np.ndarray:
