@@ -78,7 +78,7 @@ def test_check_exit_0_when_everything_holds(capsys, tmp_path):
         (["--robots", "x"], "robots='x'"),
         (["--window", "9"], "window='9'"),
         (["--window", "0x5"], "window='0x5'"),
-        (["--robots", "5", "--window", "200x200", "--engine", "scalar"], "does not pack into 63 bits"),
+        (["--robots", "5", "--window", "200x200", "--engine", "scalar"], "does not pack or rank into 63 bits"),
         (["--robots", "3", "--window", "2x2"], "window=2x2: no two robots fit"),
         (["--robots", "4", "--window", "3x4"], "no initial configuration fits"),
         (["--max-states", "0"], "max-states='0': expected a whole number"),

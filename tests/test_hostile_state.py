@@ -132,17 +132,19 @@ def _truncate(path: Path) -> None:
 
 
 def _move_flags(arrays: dict[str, np.ndarray]) -> None:
-    """The violating transitions' connectivity flag moved to an unused bit: each transition is still
-    marked violating (so the files stay consistent with each other), but of no lemma the checker reads."""
-    flags = arrays["flags"]
-    hit = (flags & 2) != 0  # Lemma.CONNECTIVITY.flag
-    assert hit.any()
-    flags[hit] = (flags[hit] & ~np.uint8(2)) | np.uint8(0x80)
+    """The level's least connectivity-violating transition moved to an unused flag bit in its summary:
+    still a violating transition (so the files stay consistent with each other), but of no lemma the
+    checker reads."""
+    summary = arrays["summary"]
+    connectivity, unused = 4 + 2 * 1, 4 + 2 * 7  # Lemma.CONNECTIVITY.flag = 2 (bit 1); bit 7 is free
+    assert summary[connectivity] >= 0
+    summary[unused : unused + 2] = summary[connectivity : connectivity + 2]
+    summary[connectivity : connectivity + 2] = -1
 
 
 def _move_all_flags(ck: Path) -> None:
     for level in sorted((ck / "n2").glob("level-*.npz"))[1:]:
-        _npz_edit(level, _move_flags) if (np.load(level)["flags"] & 2).any() else None
+        _npz_edit(level, _move_flags) if np.load(level)["summary"][6] >= 0 else None
 
 
 def _reseal_level(ck: Path, level: str, data: bytes) -> None:

@@ -97,7 +97,7 @@ def test_verdicts_and_witnesses_name_the_bound(tmp_path):
     [
         (["--bound", "5x5"], "bound=5x5: expected at least the window 9x9"),
         (["--bound", "x"], "bound='x': expected WIDTHxHEIGHT"),
-        (["--robots", "7", "--bound", "40x40"], "bound=40x40 with robots=7: a state does not pack"),
+        (["--robots", "7", "--bound", "60x60"], "bound=60x60 with robots=7: a state does not pack or rank"),
         (["--max-memory", "lots"], "max-memory='lots': expected a size"),
         (["--max-memory", "100T"], "max-memory='100T': expected at most this machine's memory"),
         (["--workers", "0"], "workers='0'"),

@@ -23,7 +23,7 @@ from ..errors import InvalidInput
 from ..lemmas.properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason, Verdict
 from ..lemmas.registry import registered
 from ..model.config import Model
-from ..model.lattice import KeyCodec
+from ..model.lattice import KeyCodec, RankedCodec
 from ..model.numbers import format_number
 from ..outputs import Kind, child
 from ..resources import default_max_memory, format_size, machine_memory
@@ -122,12 +122,19 @@ def validate_bounds(
     system = system_for(model)
     for n in range(robots[0], robots[1] + 1):
         try:
-            system.codec(n, bound)
+            if isinstance(system.codec(n, bound), RankedCodec):
+                try:
+                    KeyCodec(n, window)  # the initial configurations are enumerated packed, then ranked
+                except ValueError:
+                    raise InvalidInput(
+                        f"window={w}x{h} with robots={n}: the initial configurations do not pack into 63 bits; "
+                        "expected a smaller window or fewer robots"
+                    ) from None
         except ValueError:
             what = "window" if bound == window else "bound"
             bw, bh = bound
             raise InvalidInput(
-                f"{what}={bw}x{bh} with robots={n}: a state does not pack into 63 bits; expected a smaller {what} "
+                f"{what}={bw}x{bh} with robots={n}: a state does not pack or rank into 63 bits; expected a smaller {what} "
                 "or fewer robots"
             ) from None
 
@@ -295,10 +302,24 @@ class CheckPlan:
 def initial_keys_for(system: Any, n: int, window: tuple[int, int], codec: Any) -> np.ndarray:
     """The sorted keys (in ``codec``) of every initial configuration of ``n`` robots in ``window``."""
     model = system.model
+    if system.fields == 2 and isinstance(codec, RankedCodec):
+        return _ranked_initial_keys(n, window, model, codec)
     if system.fields == 2 and isinstance(codec, KeyCodec):
         return initial_keys(n, window, model, codec)
     states = initial_array(n, window, model)
     return keyset.sort(codec.encode(system.initial(states))) if len(states) else np.zeros(0, dtype=codec.dtype)
+
+
+def _ranked_initial_keys(n: int, window: tuple[int, int], model: Model, codec: RankedCodec) -> np.ndarray:
+    """The initial keys in a ranked codec: enumerated packed in the window's own codec (which must pack),
+    then ranked a million at a time, and sorted."""
+    small = KeyCodec(n, window)
+    keys = initial_keys(n, window, model, small)
+    for start in range(0, len(keys), 1 << 20):
+        part = keys[start : start + (1 << 20)]
+        keys[start : start + len(part)] = codec.encode(small.decode(part))
+    keys.sort()
+    return keys
 
 
 def check_robots(
@@ -459,10 +480,9 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
     expanded = ex.expanded
     extras = registered()
     for lemma in (*SAFETY, *extras):
-        hits = np.nonzero(expanded[ex.edge_src] & ((ex.edge_flags & lemma.flag) != 0))[0]
-        if len(hits):
-            first = hits[np.lexsort((ex.edge_action[hits], ex.edge_src[hits]))[0]]
-            doc = transition_witness(ex, int(first), lemma)
+        first = ex.least_violating(lemma.flag)  # the search's summaries: the least (source, action)
+        if first is not None:
+            doc = transition_witness(ex, *first, lemma)
             out[lemma] = _result(ex, lemma, Verdict.VIOLATED, f"a violating {ex.system.step_word}", doc)
         else:
             out[lemma] = _bounded(ex, lemma, liveness=False)

@@ -76,7 +76,7 @@ def held_past_violations(ex: Exploration) -> frozenset[Lemma]:
     if ex.truncated:
         return frozenset()
     expanded = ex.expanded
-    held = {lemma for lemma in SAFETY if not np.any(expanded[ex.edge_src] & ((ex.edge_flags & lemma.flag) != 0))}
+    held = {lemma for lemma in SAFETY if ex.least_violating(lemma.flag) is None}
     if ex.escaped:
         return frozenset(held & set(CHECKED))
     terminal = expanded & (ex.enabled == 0)
