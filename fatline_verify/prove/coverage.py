@@ -33,6 +33,7 @@ from ..model.config import Model
 from ..model.options import Scheduler
 from ..rules import registry
 from .basis import counts_text
+from .goals import goal_problem
 
 PROVED, VIOLATED, NOT_PROVED, NOT_ENCODED = "PROVED", "VIOLATED", "NOT PROVED", "NOT ENCODED"
 LEMMA_VERDICTS = (VIOLATED, NOT_ENCODED, NOT_PROVED, PROVED)
@@ -326,6 +327,15 @@ def liveness_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemm
 
     stuck = [k for k, v in zip(enabled, verdicts(enabled), strict=True) if v == "VIOLATED"]
     out: dict[Lemma, tuple[str, str]] = {}
+    problem = goal_problem(model)
+    if problem:  # no enabledness rows (tasks_for leaves them out): nothing said of progress
+        out[Lemma.PROGRESS] = (NOT_ENCODED, problem)
+        out[Lemma.TERMINATION] = (
+            NOT_PROVED,
+            "progress not encoded for this goal; measure: "
+            + ("every row PROVED" if all(v == "PROVED" for v in verdicts(measure)) else open_text(measure)),
+        )
+        return out
     if stuck:
         why = f"a replayed stuck configuration ({stuck[0]})"
         out[Lemma.PROGRESS] = ("VIOLATED", why)

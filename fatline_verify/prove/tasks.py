@@ -17,6 +17,7 @@ from ..rules import registry
 from ..rules.paper.cases import Case, moving_cases, staying_cases
 from ..rules.repaired.options import RepairProgress
 from ..schedulers.activation import encoded_schedulers
+from .goals import goal_problem
 from .smt.claims import (
     CLOSER,
     GLOBAL,
@@ -233,6 +234,11 @@ def _live_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
                 f"RuleSet.liveness); expected a rule set that does. Use fatline check {model.name}"
             )
         return []
+    problem = goal_problem(model)
+    if problem and Lemma.PROGRESS in asked:  # the enabledness rows encode goal=vertical-line only
+        if set(lemmas) <= {Lemma.PROGRESS}:
+            raise NotEncodedModel(f"{problem}; expected a model with goal=vertical-line for --lemma progress")
+        asked = tuple(lemma for lemma in asked if lemma is not Lemma.PROGRESS)
     return list(live_specs(model, live_cases(model), asked))
 
 

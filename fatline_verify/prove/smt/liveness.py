@@ -11,8 +11,9 @@ rule set that declares them (:class:`~fatline_verify.rules.registry.Liveness`).
   moves: in every connected non-goal swarm of any size some robot is enabled.
 - ``termination/measure-CASE``, one per *moving* case, on the model's lattice (``x = X / q``): r moves
   (its destination is not its centre) and the mover's own term of the declared lexicographic measure
-  (a sum over the robots of ``a * X + b * Y`` per component) does not fall by at least one lattice unit. ``unsat`` means every move of the case
-  makes the mover's term fall lexicographically by a unit or more.
+  (a sum over the robots of ``a * X + b * Y`` per component) does not fall by at least one lattice
+  unit. ``unsat`` means every move of the case makes the mover's term fall lexicographically by a unit
+  or more.
 
 Why ``unsat`` covers swarms of every size (written in each header): the case's conditions, and the
 named robot's (nothing seen to its left; ``g`` seen), are universal over the robots ``r`` sees or name
@@ -30,8 +31,8 @@ import z3
 
 from ...lemmas.properties import Lemma
 from ...model.config import Model
-from ...model.options import Goal
 from ...rules import registry
+from ..goals import goal_problem
 from .cases import Arith, Pt, apart, same, sees
 from .claims import Built
 from .live_rules import LiveCase
@@ -136,16 +137,6 @@ def build_measure(ar: Arith, model: Model, case: LiveCase, *, initial: bool = Fa
     built = Built(ar, asserts, bodies, "")
     built.bodies["r'"] = (r[0] + dest[0], r[1] + dest[1])
     return built
-
-
-def goal_problem(model: Model) -> str:
-    """Why the enabledness obligations do not encode ``model``'s goal (empty when they do)."""
-    if model.options.goal is Goal.VERTICAL_LINE:
-        return ""
-    return (
-        f"goal={model.options.goal}: the enabledness obligations encode goal=vertical-line (a swarm that is not a "
-        "goal has a robot off the left-most vertical); this goal is not encoded, so nothing is claimed"
-    )
 
 
 def header(model: Model, spec: LiveSpec, case: LiveCase, built: Built, *, lattice: int | None) -> str:
