@@ -2,7 +2,7 @@
 
 python bench/prove.py [MODEL ...] [--proofs proofs]
 python bench/prove.py --startup N
-python bench/prove.py --run MODEL [--jobs J] [--lemma L]
+python bench/prove.py --run MODEL [--jobs J] [--lemma L] [--fresh]
 
 The first form reads ``proofs/MODEL/results.json`` (written by ``fatline prove MODEL``) and the
 ``.smt2`` files it names; prints per model the verdict counts, the median and maximum solver seconds,
@@ -16,7 +16,8 @@ each importing the prover and returning; prints the seconds per call.
 counterexample is replayed first, as in this repository: the solver's own work is small and the
 start-up shows), one obligation at a time unless ``--jobs``; prints the wall clock per obligation,
 the solver seconds per obligation (the rows' ``seconds``) and the difference, the cost of running an
-obligation at all.
+obligation at all. ``--fresh``: into an empty directory instead (what a user gets: the shipped
+counterexample corpus, ``fatline_verify/prove/corpus.json``, is replayed first, no earlier run's).
 """
 
 from __future__ import annotations
@@ -59,10 +60,11 @@ def startup(calls: int) -> None:
     )
 
 
-def run(model: str, proofs: Path, jobs: int, lemma: str | None) -> None:
+def run(model: str, proofs: Path, jobs: int, lemma: str | None, fresh: bool = False) -> None:
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "proofs"
-        shutil.copytree(proofs, out)
+        if not fresh:
+            shutil.copytree(proofs, out)
         argv = [
             sys.executable,
             "-m",
@@ -85,7 +87,7 @@ def run(model: str, proofs: Path, jobs: int, lemma: str | None) -> None:
         solver = sum(r["seconds"] for r in rows if lemma is None or r["lemma"] == lemma)
     per = wall * jobs / ran
     print(
-        f"fatline prove {model}{f' --lemma {lemma}' if lemma else ''} --jobs {jobs}: "
+        f"fatline prove {model}{f' --lemma {lemma}' if lemma else ''} --jobs {jobs}{' (fresh)' if fresh else ''}: "
         f"{ran} obligations in {wall:.1f} s; "
         f"per obligation (x{jobs} jobs) {per:.2f} s of wall clock, {solver / ran:.2f} s solving, "
         f"{per - solver / ran:.2f} s the rest"
@@ -99,6 +101,7 @@ def saved(models: list[str], root: Path) -> None:
         data = json.loads((root / name / "results.json").read_text())
         obligations = data["obligations"]
         counts = Counter(r["verdict"] for r in obligations)
+        bases = Counter(r.get("basis", "?") for r in obligations if r["verdict"] == "PROVED")
         seconds = [r["seconds"] for r in obligations]
         files = [Path(r["smt2"]) for r in obligations if r.get("smt2") and Path(r["smt2"]).is_file()]
         sizes = [f.stat().st_size for f in files]
@@ -108,6 +111,8 @@ def saved(models: list[str], root: Path) -> None:
                 name,
                 str(len(obligations)),
                 str(counts["PROVED"]),
+                f"{bases['substantive']}/{bases['immediate']}/{bases['vacuous']}"
+                + (f" ({bases['?']} ?)" if bases["?"] else ""),
                 str(counts["VIOLATED"]),
                 str(counts["HOLDS_WITHIN_BOUNDS"]),
                 str(counts["INCONCLUSIVE"]),
@@ -122,6 +127,7 @@ def saved(models: list[str], root: Path) -> None:
         "model",
         "obligations",
         "PROVED",
+        "subst./immed./vac.",
         "VIOLATED",
         "HOLDS",
         "INCONCL.",
@@ -142,11 +148,12 @@ def main() -> None:
     parser.add_argument("--run", metavar="MODEL", help="time a fresh fatline prove MODEL (earlier results replayed)")
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--lemma")
+    parser.add_argument("--fresh", action="store_true", help="--run into an empty directory (no earlier results)")
     args = parser.parse_args()
     if args.startup:
         startup(args.startup)
     elif args.run:
-        run(args.run, Path(args.proofs), args.jobs, args.lemma)
+        run(args.run, Path(args.proofs), args.jobs, args.lemma, args.fresh)
     else:
         saved(args.models, Path(args.proofs))
 

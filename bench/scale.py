@@ -3,14 +3,19 @@
 For each robot count, one `fatline check` process on the SPIN anchor's reading
 (`../shared/anchors/spin/spin-reading.toml`), initial configurations in the 9x9 window, explored within
 a bound nothing escapes from (20x20, checked: escaped = 0), every lemma judged and every witness
-replayed. Prints initial configurations, states, transitions, seconds, states/s, bytes a state (the
-search's arrays / states) and the process's peak memory; and, when `spin` and `gcc` are on the PATH,
-SPIN's whole pipeline (generate, spin -a, gcc, pan) on the same state space, measured in the same run.
+replayed. Prints initial configurations, states, transitions, seconds, states/s, bytes a state (what
+the search keeps / states: the compact store's key, parent, action, enabled, goal) and the process's
+peak memory; and, when `spin` and `gcc` are on the PATH, SPIN's whole pipeline (generate, spin -a,
+gcc, pan) on the same state space, measured in the same run (up to `--spin-robots`, default 7: SPIN
+at n = 8 needs an estimated 17 GB). Every fatline run starts with no answers kept (a fresh
+`FATLINE_ANSWERS` directory: as a first run); `warm s` is a second run of the same n with the answers
+the first one kept (fatline_verify/check/answers.py), for n up to `--warm-robots` (default 6).
 `--workers 2` adds a column with the search shared by two Dask workers and the speed-up.
 
     python bench/scale.py                  # n = 4, 5, 6
     python bench/scale.py --robots 7       # n = 4..7 (n = 7 takes minutes)
     python bench/scale.py --workers 2      # also with two worker processes
+    python bench/scale.py --robots 8 --max-memory 15G   # n = 8: 72-bit states, ranked keys
 """
 
 from __future__ import annotations
@@ -31,7 +36,9 @@ ANCHOR = ROOT.parent / "shared" / "anchors" / "spin"
 BOUND = "20x20"
 
 
-def run_measured(cmd: list[str], cwd: Path, env: dict[str, str] | None = None) -> tuple[float, float, str]:
+def run_measured(
+    cmd: list[str], cwd: Path, env: dict[str, str] | None = None, ok: tuple[int, ...] = (0, 1, 3)
+) -> tuple[float, float, str]:
     """Wall seconds, peak RSS in MB (of the process tree, via /usr/bin/time when present) and stdout."""
     timer = shutil.which("time") or ("/usr/bin/time" if Path("/usr/bin/time").exists() else None)
     stats = cwd / "time.out"
@@ -40,17 +47,19 @@ def run_measured(cmd: list[str], cwd: Path, env: dict[str, str] | None = None) -
     out = subprocess.run(full, cwd=cwd, capture_output=True, text=True, env=env)
     wall = time.perf_counter() - t0
     peak = float(stats.read_text().split()[-1]) / 1024 if timer and stats.exists() else float("nan")
-    if out.returncode not in (0, 1, 3):
+    if out.returncode not in ok:
         sys.exit(f"{cmd[0]} failed ({out.returncode}): {out.stderr.strip()[-400:]}")
     return wall, peak, out.stdout
 
 
-def fatline(n: int, workdir: Path, workers: int) -> dict[str, float]:
+def fatline(n: int, workdir: Path, workers: int, answers: Path, max_memory: str | None = None) -> dict[str, float]:
     out = workdir / f"n{n}-w{workers}.json"
     cmd = [sys.executable, "-m", "fatline_verify.cli", "check", str(ANCHOR / "spin-reading.toml"), "--robots", str(n)]
-    cmd += ["--window", "9x9", "--bound", BOUND, "--max-states", "200000000", "--workers", str(workers)]
+    cmd += ["--window", "9x9", "--bound", BOUND, "--max-states", "400000000", "--workers", str(workers)]
     cmd += ["--json", str(out), "--traces", str(workdir / "traces"), "--force", "-q"]
-    wall, peak, _ = run_measured(cmd, workdir)
+    cmd += ["--max-memory", max_memory] if max_memory else []
+    env = dict(os.environ, FATLINE_ANSWERS=str(answers))
+    wall, peak, _ = run_measured(cmd, workdir, env)
     search = json.loads(out.read_text())["searches"][0]
     assert search["escaped"] == 0, f"n={n}: {search['escaped']} successors escape {BOUND}; raise BOUND"
     return {
@@ -60,6 +69,7 @@ def fatline(n: int, workdir: Path, workers: int) -> dict[str, float]:
         "seconds": wall,
         "peak_mb": peak,
         "bytes_per_state": search.get("bytes", 0) / max(1, search["states"]),
+        "verdicts": {row["lemma"]: row["verdict"] for row in json.loads(out.read_text())["lemmas"]},
     }
 
 
@@ -85,36 +95,43 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--robots", type=int, default=6, help="largest robot count (default 6)")
     parser.add_argument("--workers", type=int, default=1, help="also measure with this many Dask workers")
+    parser.add_argument("--spin-robots", type=int, default=7, help="run SPIN up to this robot count (default 7)")
+    parser.add_argument("--warm-robots", type=int, default=6, help="a second run with kept answers up to this n")
+    parser.add_argument("--max-memory", default=None, help="fatline's --max-memory (default: its own)")
     args = parser.parse_args()
     sys.path.insert(0, str(ROOT))
     from fatline_verify.text import table
 
-    heads = ["n", "initial", "states", "transitions", "fatline s", "states/s", "bytes/state", "peak MB"]
+    heads = ["n", "initial", "states", "transitions", "fatline s", "warm s", "states/s", "bytes/state", "peak MB"]
     heads += ["SPIN s (pan s)", "SPIN peak MB", "SPIN / fatline"]
     if args.workers > 1:
         heads += [f"{args.workers} workers s", "speed-up"]
     rows = []
     with tempfile.TemporaryDirectory(prefix="fatline-bench-") as tmp:
         work = Path(tmp)
-        fatline(3, work, 1)  # warm the compiled kernels' cache
+        fatline(3, work, 1, work / "answers-3")  # warm the compiled kernels' cache (numba's, not the answers)
         for n in range(4, args.robots + 1):
-            ours = fatline(n, work, 1)
-            theirs = spin(n, work)
+            ours = fatline(n, work, 1, work / f"answers-{n}", args.max_memory)
+            warm = fatline(n, work, 1, work / f"answers-{n}", args.max_memory) if n <= args.warm_robots else None
+            if warm is not None:
+                assert (warm["states"], warm["verdicts"]) == (ours["states"], ours["verdicts"])
+            theirs = spin(n, work) if n <= args.spin_robots else None
             row = [str(n), f"{ours['initial']:,}", f"{ours['states']:,}", f"{ours['transitions']:,}"]
-            row += [f"{ours['seconds']:.2f}", f"{ours['states'] / ours['seconds']:,.0f}"]
+            row += [f"{ours['seconds']:.2f}", f"{warm['seconds']:.2f}" if warm else "-"]
+            row += [f"{ours['states'] / ours['seconds']:,.0f}"]
             row += [f"{ours['bytes_per_state']:.0f}", f"{ours['peak_mb']:.0f}"]
             if theirs:
                 same = "" if theirs["states"] == ours["states"] else f" (SPIN: {theirs['states']:,} states!)"
                 row += [f"{theirs['seconds']:.2f} ({theirs['pan_seconds']:.2f}){same}", f"{theirs['peak_mb']:.0f}"]
                 row += [f"{theirs['seconds'] / ours['seconds']:.2f}x"]
             else:
-                row += ["(spin not installed)", "-", "-"]
+                row += ["(not run)" if n > args.spin_robots else "(spin not installed)", "-", "-"]
             if args.workers > 1:
-                par = fatline(n, work, args.workers)
-                assert par["states"] == ours["states"]
+                par = fatline(n, work, args.workers, work / f"answers-{n}-w", args.max_memory)
+                assert (par["states"], par["verdicts"]) == (ours["states"], ours["verdicts"])
                 row += [f"{par['seconds']:.2f}", f"{ours['seconds'] / par['seconds']:.2f}x"]
             rows.append(row)
-            print(table(heads, rows)[-1], flush=True)
+            print(table(heads, rows)[-1], " ".join(f"{k}={v}" for k, v in ours["verdicts"].items()), flush=True)
     print()
     print("\n".join(table(heads, rows)))
 

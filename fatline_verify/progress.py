@@ -127,6 +127,17 @@ class Progress:
                 else:
                     self.bar.refresh()
 
+    def say(self, text: str) -> None:
+        """A line at once (``fatline: text``; on a terminal above the bar): what a command is about to do,
+        what it just did."""
+        if not self.enabled:
+            return
+        with self._lock:
+            if self.bar is not None:
+                self.bar.write(f"fatline: {text}", file=self.stream)
+            else:
+                self._line(text)
+
     def step(self, label: str) -> None:
         """One unit of the current stage done (``label`` names it)."""
         self.update(self.done + 1, note=label)

@@ -13,14 +13,13 @@ import re
 from .errors import InvalidInput
 
 BYTES_PER_STATE = 128
-"""A generous estimate of a search's bytes per state, transitions included (measured: about 60 at
-n = 5 and 85 at n = 6 on the 9x9 lattice; a level's temporaries come on top)."""
+"""A generous estimate of a search's bytes per state and its level's temporaries (the compact store
+holds 18 bytes a state, plus 8 for the visited set while the search runs)."""
 
-PEAK_FACTOR = 2.5
-"""A process's peak memory over the arrays a search holds: a level's working columns, the
-de-duplication's copies and the final assembly come on top (measured on the 9x9 lattice: 2.3x at
-n = 6, 2.4x at n = 7). The memory guard compares the held arrays plus the next level's estimate,
-times this, with ``--max-memory``."""
+PEAK_FACTOR = 1.25
+"""A margin over the held arrays plus the next level's estimate (which counts the level's working
+copies: :func:`fatline_verify.check.search._next_level_estimate`) for what the estimate misses; the
+memory guard compares their product with ``--max-memory``."""
 
 DEFAULT_SHARE = 0.5
 """The share of the machine's memory a search may use unless ``--max-memory`` says otherwise."""

@@ -515,22 +515,59 @@ def prove_short_row(r: dict[str, Any]) -> list[str]:
 
 
 def prove_counts(results: list[dict[str, Any]]) -> list[str]:
-    """One line per lemma: how many obligations have each verdict."""
+    """One line per lemma: how many obligations have each verdict, PROVED split by basis (substantive,
+    immediate, vacuous: :mod:`fatline_verify.prove.basis`) where the rows record it."""
+    from .prove.basis import counts_text
+
     lines = []
     for lemma in dict.fromkeys(r["lemma"] for r in results):
-        mine = [r["verdict"] for r in results if r["lemma"] == lemma]
-        counts = ", ".join(f"{mine.count(v)} {v}" for v in dict.fromkeys(sorted(mine)))
+        rows = [r for r in results if r["lemma"] == lemma]
+        mine = [r["verdict"] for r in rows]
+        split = f" ({counts_text(rows)})" if any(r.get("basis") for r in rows) else ""
+        kinds = dict.fromkeys(sorted(mine))
+        counts = ", ".join(f"{mine.count(v)} {v}" + (split if v == "PROVED" else "") for v in kinds)
         lines.append(f"{lemma}: {len(mine)} obligation{'s' if len(mine) != 1 else ''}: {counts}")
     return lines
+
+
+DECIDED_BY = {
+    "search": "the search",
+    "corpus": "the shipped counterexample corpus",
+    "earlier": "an earlier run's counterexample",
+    "given": "--known",
+}
+"""How the summary names what decided a row (:data:`fatline_verify.prove.corpus.DECIDERS`)."""
+
+
+def prove_deciders(results: list[dict[str, Any]]) -> list[str]:
+    """One line: what decided the VIOLATED rows (a row's ``decided_by``; rows written before it was
+    recorded are not counted), none without such a row."""
+    got = [str(r["decided_by"]) for r in results if r.get("verdict") == "VIOLATED" and r.get("decided_by")]
+    if not got:
+        return []
+    counts = ", ".join(
+        f"{got.count(k)} by {DECIDED_BY.get(k, k)}" for k in dict.fromkeys([*DECIDED_BY, *got]) if k in got
+    )
+    return [f"VIOLATED decided: {counts} (each replayed by the executable model)"]
+
+
+def lemma_lines(model: Any, results: list[dict[str, Any]]) -> list[str]:
+    """One line per lemma with rows: its lemma-level verdict and why (:mod:`fatline_verify.prove.coverage`)."""
+    from .prove.coverage import lemma_verdicts
+
+    return [f"{v.lemma}: {v.verdict}: {v.why}" for v in lemma_verdicts(model, results)]
 
 
 def prove_lines(model: Any, results: list[dict[str, Any]], out: Any, *, verbose: bool = False) -> list[str]:
     """The summary of ``fatline prove``: verdict counts per lemma, then one line per results row:
     obligation, verdict, seconds and a short reason; ``verbose``: every field, the reason in full, the
     trace, and what the ``robots`` column counts."""
-    lines = [f"model {model.describe()}", "", *prove_counts(results), ""]
+    lines = [f"model {model.describe()}", "", "lemmas (from the forms that together imply each):"]
+    lines += [f"  {line}" for line in lemma_lines(model, results)]
+    lines += ["", "obligations:", *prove_counts(results), *prove_deciders(results), ""]
     if verbose:
-        lines += table(PROVE_COLUMNS, [prove_row(r, r.get("trace") or "") for r in results])
+        rows = [[*prove_row(r, r.get("trace") or ""), str(r.get("decided_by", ""))] for r in results]
+        lines += table([*PROVE_COLUMNS, "decided by"], rows)
         lines += ["", f"Columns: {PROVE_ROBOTS_LEGEND}."]
     else:
         lines += table(PROVE_SHORT_COLUMNS, [prove_short_row(r) for r in results])

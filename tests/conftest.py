@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -10,6 +11,9 @@ import pytest
 
 from fatline_verify.model.config import Model, Parameters
 from fatline_verify.model.options import Options
+
+
+os.environ["FATLINE_ANSWERS"] = "off"  # no test reads or writes answers kept by other runs (tests/test_store.py: on)
 
 
 def make_model(rad_v: int | Fraction = 4, q: int = 1, **readings: str) -> Model:

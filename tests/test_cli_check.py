@@ -55,7 +55,7 @@ def test_a_first_run_says_it_is_compiling_the_kernels_not_0_states(monkeypatch):
     checker.explore_robots(plan, 2, None, lambda label, done, total, note: seen.append((label, done, total)))
     assert checker.kernels_cached(plan.engine)  # they are now, whatever they were before
     assert seen[0] == ("n=2: enumerating initial configurations in 7x7", 0, 0)
-    monkeypatch.setattr(checker, "kernels_cached", lambda engine: False)
+    monkeypatch.setattr(checker, "kernels_cached", lambda engine, family="rounds": False)
     seen.clear()
     checker.explore_robots(plan, 2, None, lambda label, done, total, note: seen.append((label, done, total)))
     assert seen[0] == ("n=2: compiling kernels, first run only", 0, 0)
@@ -78,7 +78,7 @@ def test_check_exit_0_when_everything_holds(capsys, tmp_path):
         (["--robots", "x"], "robots='x'"),
         (["--window", "9"], "window='9'"),
         (["--window", "0x5"], "window='0x5'"),
-        (["--robots", "5", "--window", "200x200", "--engine", "scalar"], "does not pack into 63 bits"),
+        (["--robots", "5", "--window", "200x200", "--engine", "scalar"], "does not pack or rank into 63 bits"),
         (["--robots", "3", "--window", "2x2"], "window=2x2: no two robots fit"),
         (["--robots", "4", "--window", "3x4"], "no initial configuration fits"),
         (["--max-states", "0"], "max-states='0': expected a whole number"),
@@ -112,7 +112,8 @@ def test_help_states_exit_codes(capsys):
         (["--slots", "0"], "slots='0': expected a whole number"),
         (
             ["--lemma", "happiness"],
-            "lemma='happiness': expected one of no-collision, connectivity, rma-fixed, approach, all",
+            "lemma='happiness': expected one of no-collision, connectivity, rma-fixed, approach, progress, "
+            "termination, liveness, all",
         ),
     ],
 )

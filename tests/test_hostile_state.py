@@ -115,22 +115,36 @@ def _npz_edit(path: Path, change: Callable[[dict[str, np.ndarray]], None]) -> No
     path.write_bytes(buffer.getvalue())
 
 
+def _new_npz(**arrays: np.ndarray) -> bytes:
+    buffer = io.BytesIO()
+    np.savez(buffer, **arrays)
+    return buffer.getvalue()
+
+
+def _reseal_sweep_file(out: Path, name: str, data: bytes) -> None:
+    """Replace a file of a sweep and make sweep.json agree (what only a forger would do)."""
+    (out / name).write_bytes(data)
+    _json_edit(out / "sweep.json", lambda d: d["files"].__setitem__(name, bytes_digest(data)), reseal=True)
+
+
 def _truncate(path: Path) -> None:
     path.write_bytes(path.read_bytes()[: len(path.read_bytes()) // 2])
 
 
 def _move_flags(arrays: dict[str, np.ndarray]) -> None:
-    """The violating transitions' connectivity flag moved to an unused bit: each transition is still
-    marked violating (so the files stay consistent with each other), but of no lemma the checker reads."""
-    flags = arrays["flags"]
-    hit = (flags & 2) != 0  # Lemma.CONNECTIVITY.flag
-    assert hit.any()
-    flags[hit] = (flags[hit] & ~np.uint8(2)) | np.uint8(0x80)
+    """The level's least connectivity-violating transition moved to an unused flag bit in its summary:
+    still a violating transition (so the files stay consistent with each other), but of no lemma the
+    checker reads."""
+    summary = arrays["summary"]
+    connectivity, unused = 4 + 2 * 1, 4 + 2 * 7  # Lemma.CONNECTIVITY.flag = 2 (bit 1); bit 7 is free
+    assert summary[connectivity] >= 0
+    summary[unused : unused + 2] = summary[connectivity : connectivity + 2]
+    summary[connectivity : connectivity + 2] = -1
 
 
 def _move_all_flags(ck: Path) -> None:
     for level in sorted((ck / "n2").glob("level-*.npz"))[1:]:
-        _npz_edit(level, _move_flags) if (np.load(level)["flags"] & 2).any() else None
+        _npz_edit(level, _move_flags) if np.load(level)["summary"][6] >= 0 else None
 
 
 def _reseal_level(ck: Path, level: str, data: bytes) -> None:
@@ -290,6 +304,62 @@ TAMPERED: list[tuple[str, dict[str, str], Callable[[Path], None], list[str], str
         lambda w: (w / SW / "traces" / "connectivity-1.json").write_text("{}"),
         SWEEP_AGAIN,
         "connectivity-1.json: its content does not match",
+    ),
+    (
+        "sweep-known-flipped",
+        {"sw": "sw"},
+        lambda w: _npz_edit(w / SW / "known.npz", lambda a: a.__setitem__("where", a["where"].astype(np.int32))),
+        SWEEP_AGAIN,
+        "known.npz: its content does not match the digest sweep.json records",
+    ),
+    (
+        "sweep-known-garbage-resealed",
+        {"sw": "sw"},
+        lambda w: _reseal_sweep_file(w / SW, "known.npz", b"junk"),
+        SWEEP_AGAIN,
+        "known.npz: not the known states fatline sweep saved",
+    ),
+    (
+        "sweep-known-mistyped-resealed",
+        {"sw": "sw"},
+        lambda w: _reseal_sweep_file(w / SW, "known.npz", _new_npz(where=np.zeros((1, 5), dtype=np.int64))),
+        SWEEP_AGAIN,
+        "known.npz: not the known states fatline sweep saved",
+    ),
+    (
+        "sweep-known-left-out-of-the-manifest-resealed",
+        {"sw": "sw"},
+        lambda w: _json_edit(
+            w / SW / "sweep.json",
+            lambda d: d["files"].pop("known.npz") and d["files"].__setitem__("other.npz", d["files"]["status.npz"]),
+            reseal=True,
+        ),
+        SWEEP_AGAIN,
+        "malformed",
+    ),
+    (
+        "sweep-pending-malformed-resealed",
+        {"sw": "sw"},
+        lambda w: _json_edit(
+            w / SW / "sweep.json",
+            lambda d: d.__setitem__("pending", {"combos": [{"quadrants": 9, "path": 0}], "absorbed": []}),
+            reseal=True,
+        ),
+        SWEEP_AGAIN,
+        "malformed",
+    ),
+    (
+        "sweep-pending-lemma-twice-resealed",
+        {"sw": "sw"},
+        lambda w: _json_edit(
+            w / SW / "sweep.json",
+            lambda d: d.__setitem__(
+                "pending", {"combos": [{"quadrants": 0, "path": 0}], "absorbed": ["connectivity", "connectivity"]}
+            ),
+            reseal=True,
+        ),
+        SWEEP_AGAIN,
+        "malformed",
     ),
     # the prover's results.json, written before digests: rows against their evidence
     (

@@ -49,8 +49,22 @@ def lemma_literals(path: Path) -> list[str]:
     return literals_in(path.read_text(encoding="utf-8"), path.relative_to(PACKAGE.parent).as_posix())
 
 
+REPAIR_NOT_LEMMA = {
+    "fatline_verify/prove/replay.py": "approach",
+    "fatline_verify/prove/smt/claims.py": "approach",
+    "fatline_verify/prove/tasks.py": "approach",
+}
+"""Files where ``'approach'`` names the repair ``repair_approach`` (its destination's obligations), not the lemma."""
+
+
 def test_no_lemma_name_outside_the_table():
-    found = [hit for path in sorted(PACKAGE.rglob("*.py")) if path != TABLE for hit in lemma_literals(path)]
+    found = [
+        hit
+        for path in sorted(PACKAGE.rglob("*.py"))
+        if path != TABLE
+        for hit in lemma_literals(path)
+        if not hit.endswith(f": {REPAIR_NOT_LEMMA.get(hit.split(':')[0], '')!r}")
+    ]
     assert not found, "lemma names spelled outside properties.py (use the Lemma members):\n" + "\n".join(found)
 
 
@@ -101,7 +115,9 @@ def test_safety_flags_are_distinct_bits():
 def test_prover_lemmas_named_alike():
     """The CLI's ``--lemma`` choices and the report's prover columns name the obligations' lemmas
     (they cannot import them: that would load z3)."""
-    assert LEMMA_CHOICES == LEMMAS == PROVER_LEMMAS
+    assert LEMMA_CHOICES == LEMMAS
+    # the report's columns: the safety lemmas (the liveness obligations are not reported there)
+    assert tuple(lemma for lemma in LEMMAS if lemma not in (Lemma.PROGRESS, Lemma.TERMINATION)) == PROVER_LEMMAS
 
 
 def test_prover_defaults_named_alike():

@@ -97,7 +97,7 @@ def test_verdicts_and_witnesses_name_the_bound(tmp_path):
     [
         (["--bound", "5x5"], "bound=5x5: expected at least the window 9x9"),
         (["--bound", "x"], "bound='x': expected WIDTHxHEIGHT"),
-        (["--robots", "7", "--bound", "40x40"], "bound=40x40 with robots=7: a state does not pack"),
+        (["--robots", "7", "--bound", "60x60"], "bound=60x60 with robots=7: a state does not pack or rank"),
         (["--max-memory", "lots"], "max-memory='lots': expected a size"),
         (["--max-memory", "100T"], "max-memory='100T': expected at most this machine's memory"),
         (["--workers", "0"], "workers='0'"),
@@ -112,9 +112,25 @@ def test_bad_scale_flags_are_one_line_errors(capsys, tmp_path, args, fragment):
     assert_one_line_error(code, err, fragment)
 
 
-def test_async_has_no_compiled_engine(capsys, tmp_path):
-    code, _, err = run_cli(capsys, "check", "paper-async", "--engine", "compiled", "--traces", str(tmp_path), "-q")
-    assert_one_line_error(code, err, "engine='compiled'", "scheduler=async")
+def test_async_runs_the_compiled_engine(capsys, tmp_path):
+    out = tmp_path / "check.json"
+    args = ["paper-async", "--robots", "2", "--window", "6x6", "--engine", "compiled", "--json", str(out)]
+    code, _, err = run_cli(capsys, "check", *args, "--traces", str(tmp_path / "t"), "-q")
+    assert code in (0, 1) and not err
+    assert [s["engine"] for s in json.loads(out.read_text())["searches"]] == ["compiled"]
+
+
+def test_a_system_without_an_engine_refuses_it():
+    from types import SimpleNamespace
+
+    from fatline_verify.check.engines import engine_for
+    from fatline_verify.model.options import Scheduler
+
+    other = SimpleNamespace(family="other", kind=Scheduler.ASYNC)
+    with pytest.raises(
+        InvalidInput, match="engine='compiled': scheduler=async has no compiled engine; expected scalar"
+    ):
+        engine_for(other, "compiled")  # type: ignore[arg-type]
 
 
 # --- shards and workers ------------------------------------------------------------------------------

@@ -190,7 +190,9 @@ def test_forms_follow_the_scheduler():
         for s in ("ssync", "fsync")
     }
     assert (
-        forms["ssync"] == forms["fsync"] == {"one-mover", "two-movers", "closer", "global", "seen", "x-nondecreasing"}
+        forms["ssync"]
+        == forms["fsync"]
+        == {"one-mover", "two-movers", "closer", "global", "seen", "on-rma", "x-nondecreasing", "enabled", "measure"}
     )
     assert "two-movers" not in {getattr(t, "form", "") for t in tasks_for(make_model(), two_movers=False)}
     central = tasks_for(make_model(scheduler="centralized"), two_movers=True)

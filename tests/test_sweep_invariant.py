@@ -25,7 +25,7 @@ from fatline_verify.sweep.invariant import (
     within_known,
 )
 from fatline_verify.sweep.memo import Memo
-from fatline_verify.sweep.run import SweepBounds, check_combo
+from fatline_verify.sweep.run import GROW, SweepBounds, check_combo
 from fatline_verify.sweep.space import Space
 
 VARY = ("visibility", "vacant", "contact", "goal")
@@ -169,6 +169,33 @@ def test_the_states_of_several_checks_close_every_reading_each_trap_does_and_onl
     assert not (got.same & ~holds).any()
     assert (got.same | ~singles).all() and got.same.sum() >= singles.sum() > 0
     assert not within_known(space, ~holds, known, memo).same.any()  # nothing where progress fails
+
+
+def test_a_spread_within_a_memory_budget_or_a_work_bound_closes_no_more(checked):
+    """``budget``: the spread's sets of combinations never hold more bytes; what it closes is a part of
+    what the free spread closes (the combinations it could not follow stay open), and a budget as large
+    as the free spread's peak changes nothing. A memo that forgets everything answers alike."""
+    space, found = checked
+    i = next(i for i, f in enumerate(found) if f.verdicts[Lemma.PROGRESS] is Verdict.HOLDS_WITHIN_BOUNDS)
+    known = [Trap(ex.n, ex.bound, ex.window, np.sort(ex.expanded)) for ex in found[i].stopped]
+    everything = np.ones(space.size, dtype=bool)
+    free = within_known(space, everything, known, Memo(space), grow=GROW)
+    assert free.peak > 0 and free.same.sum() > 1
+    for budget in (free.peak // 2, free.peak // 8):
+        tight = within_known(space, everything, known, Memo(space), grow=GROW, budget=budget)
+        assert 0 < tight.peak <= budget
+        assert not (tight.same & ~free.same).any()
+    roomy = within_known(space, everything, known, Memo(space), grow=GROW, budget=free.peak)
+    assert (roomy.same == free.same).all() and roomy.peak == free.peak
+    forgetful = Memo(space, limit=1)
+    again = within_known(space, everything, known, forgetful, grow=GROW)
+    assert (again.same == free.same).all() and forgetful.forgotten > 0
+    # a work bound: a part of what the free spread closes, the same with an empty memo or a full one
+    full = Memo(space)
+    within_known(space, everything, known, full, grow=GROW)
+    short = [within_known(space, everything, known, memo, grow=GROW, work=40).same for memo in (Memo(space), full)]
+    assert (short[0] == short[1]).all() and not (short[0] & ~free.same).any() and short[0].sum() < free.same.sum()
+    assert (within_known(space, everything, known, Memo(space), grow=GROW, work=10**9).same == free.same).all()
 
 
 def test_ranked_states_of_several_checks_close_termination_only_where_it_holds(checked):

@@ -23,13 +23,14 @@ from ..errors import InvalidInput
 from ..lemmas.properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason, Verdict
 from ..lemmas.registry import registered
 from ..model.config import Model
-from ..model.lattice import KeyCodec
+from ..model.lattice import KeyCodec, RankedCodec
 from ..model.numbers import format_number
 from ..outputs import Kind, child
 from ..resources import default_max_memory, format_size, machine_memory
 from ..schedulers.base import ENGINES, unknown_engine
 from ..schedulers.systems import system_for
 from ..trace.traces import approach_stuck
+from . import keys as keyset
 from .checkpoint import claim_checkpoint
 from .engines import engine_for
 from .initial import initial_array, initial_keys
@@ -121,12 +122,19 @@ def validate_bounds(
     system = system_for(model)
     for n in range(robots[0], robots[1] + 1):
         try:
-            system.codec(n, bound)
+            if isinstance(system.codec(n, bound), RankedCodec):
+                try:
+                    KeyCodec(n, window)  # the initial configurations are enumerated packed, then ranked
+                except ValueError:
+                    raise InvalidInput(
+                        f"window={w}x{h} with robots={n}: the initial configurations do not pack into 63 bits; "
+                        "expected a smaller window or fewer robots"
+                    ) from None
         except ValueError:
             what = "window" if bound == window else "bound"
             bw, bh = bound
             raise InvalidInput(
-                f"{what}={bw}x{bh} with robots={n}: a state does not pack into 63 bits; expected a smaller {what} "
+                f"{what}={bw}x{bh} with robots={n}: a state does not pack or rank into 63 bits; expected a smaller {what} "
                 "or fewer robots"
             ) from None
 
@@ -294,10 +302,24 @@ class CheckPlan:
 def initial_keys_for(system: Any, n: int, window: tuple[int, int], codec: Any) -> np.ndarray:
     """The sorted keys (in ``codec``) of every initial configuration of ``n`` robots in ``window``."""
     model = system.model
+    if system.fields == 2 and isinstance(codec, RankedCodec):
+        return _ranked_initial_keys(n, window, model, codec)
     if system.fields == 2 and isinstance(codec, KeyCodec):
         return initial_keys(n, window, model, codec)
     states = initial_array(n, window, model)
-    return np.sort(codec.encode(system.initial(states))) if len(states) else np.zeros(0, dtype=codec.dtype)
+    return keyset.sort(codec.encode(system.initial(states))) if len(states) else np.zeros(0, dtype=codec.dtype)
+
+
+def _ranked_initial_keys(n: int, window: tuple[int, int], model: Model, codec: RankedCodec) -> np.ndarray:
+    """The initial keys in a ranked codec: enumerated packed in the window's own codec (which must pack),
+    then ranked a million at a time, and sorted."""
+    small = KeyCodec(n, window)
+    keys = initial_keys(n, window, model, small)
+    for start in range(0, len(keys), 1 << 20):
+        part = keys[start : start + (1 << 20)]
+        keys[start : start + len(part)] = codec.encode(small.decode(part))
+    keys.sort()
+    return keys
 
 
 def check_robots(
@@ -325,22 +347,34 @@ def check_robots(
     return stats, results
 
 
-def kernels_cached(engine: str) -> bool:
-    """Whether the numba kernels a search with ``engine`` runs are compiled in this process or cached
-    on disk for this source (so no compile comes first); ``True`` where numba cannot tell."""
-    from . import compiled, hashtable, initial
+def kernels_cached(engine: str, family: str = "rounds") -> bool:
+    """Whether the numba kernels a search with ``engine`` over a system of ``family`` runs are compiled
+    in this process or cached on disk for this source (so no compile comes first); ``True`` where
+    numba cannot tell."""
+    from . import compiled, compiled_async, hashtable, initial, keys
 
-    modules = [initial, hashtable, compiled] if engine == "compiled" else [initial]
+    def own(module: Any) -> list[Any]:
+        """The module's own kernels (one imported from another is compiled into its callers there)."""
+        return [
+            v
+            for v in vars(module).values()
+            if getattr(getattr(v, "py_func", None), "__module__", None) == module.__name__
+        ]
+
+    kernels = own(initial)
+    if engine == "compiled":
+        kernels += own(hashtable) + own(compiled) + (own(compiled_async) if family == "async" else [])
+    if family == "async":  # keys past 63 bits (n >= 4 in 9x9), whatever the engine
+        kernels += [keys._argsort, keys._bisect, keys._walk, keys._ascending]
     try:
-        for module in modules:
-            for value in vars(module).values():
-                cache = getattr(value, "_cache", None)
-                if not hasattr(value, "signatures") or cache is None or value.signatures:
-                    continue
-                if getattr(value, "targetoptions", {}).get("inline") == "always":
-                    continue  # compiled into its callers only
-                if not cache._cache_file._load_index():
-                    return False
+        for value in kernels:
+            cache = getattr(value, "_cache", None)
+            if not hasattr(value, "signatures") or cache is None or value.signatures:
+                continue
+            if getattr(value, "targetoptions", {}).get("inline") == "always":
+                continue  # compiled into its callers only
+            if not cache._cache_file._load_index():
+                return False
     except Exception:  # numba's cache layout is not an API: no message rather than a wrong one
         return True
     return True
@@ -354,7 +388,7 @@ def explore_robots(
     bound = plan.bound or window
     system = system_for(model)
     codec = system.codec(n, bound)
-    compiling = progress is not None and not kernels_cached(plan.engine)
+    compiling = progress is not None and not kernels_cached(plan.engine, system.family)
     if progress:
         # A first run compiles the numba kernels (seconds to a minute, once: they are cached); a stage
         # that says so stands until the first level's first batch, which the compile precedes.
@@ -446,10 +480,9 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
     expanded = ex.expanded
     extras = registered()
     for lemma in (*SAFETY, *extras):
-        hits = np.nonzero(expanded[ex.edge_src] & ((ex.edge_flags & lemma.flag) != 0))[0]
-        if len(hits):
-            first = hits[np.lexsort((ex.edge_action[hits], ex.edge_src[hits]))[0]]
-            doc = transition_witness(ex, int(first), lemma)
+        first = ex.least_violating(lemma.flag)  # the search's summaries: the least (source, action)
+        if first is not None:
+            doc = transition_witness(ex, *first, lemma)
             out[lemma] = _result(ex, lemma, Verdict.VIOLATED, f"a violating {ex.system.step_word}", doc)
         else:
             out[lemma] = _bounded(ex, lemma, liveness=False)

@@ -6,7 +6,7 @@ again continues to the identical result, and a run killed at any instant loses a
 work. The visited set is the union of the levels' keys and the frontier is the last level, so the level
 files are the shards: ``level-00000.npz`` holds the initial keys, ``level-L.npz`` the states first
 reached at depth L (keys, parents, actions) and the expansion of level L-1 (per state: enabled, goal;
-per transition: source, action, successor key, flags). Each file is written to a temporary name (unique
+the summary of its transitions: counts and the least violating one per flag bit). Each file is written to a temporary name (unique
 to the process) and renamed, then ``manifest.json`` (likewise, last) records how many levels are
 complete and the SHA-256 of every level file; a level file beyond the manifest is the remains of a
 killed write and is written again, and a level file (or a manifest) whose content does not match its
@@ -36,14 +36,15 @@ from ..errors import InvalidInput, OutputFailed
 from ..integrity import bytes_digest, is_digest, seal, sealed
 from ..model.config import Model, model_to_mapping
 from ..outputs import NotReadable, os_error_text, parse_json, read_regular, write_bytes
-from .shard import COLUMNS
+from .shard import COLUMNS, SUMMARY_LENGTH
 
 if TYPE_CHECKING:
     from .search import _Records
 
 FORMAT = "fatline-checkpoint"
-VERSION = 3
-"""3: the manifest carries its own digest and every level file's (2: neither; refused, not trusted)."""
+VERSION = 4
+"""4: a level's transitions as a summary (the compact store); 3: every transition's columns; 3 and
+earlier: refused (3 has no summaries; 2 no digests, not trusted)."""
 MANIFEST = "manifest.json"
 _LEVEL = ("keys", "parent", "paction")
 _EXPANSION = COLUMNS
@@ -103,7 +104,7 @@ class Checkpoint:
         if doc.get("version") != VERSION:
             raise InvalidInput(
                 f"{self._where(MANIFEST)}: version={str(doc.get('version'))[:20]!r} (written by another version of "
-                f"fatline, without the digests of version {VERSION}); expected an empty directory to start afresh"
+                f"fatline, whose level files version {VERSION} does not read); expected an empty directory to start afresh"
             )
         if not sealed(doc, self.directory / MANIFEST):
             raise OutputFailed(
@@ -178,10 +179,12 @@ class Checkpoint:
                 f"{self._where(path.name)}: not a level file ({exc.__class__.__name__}); expected the directory as "
                 "fatline check left it, or an empty one"
             ) from None
-        same = [("keys", "parent", "paction")] + (
-            [("ids", "enabled", "goal"), ("src", "action", "flags")] if level else []
-        )
-        if any(a.ndim != 1 for a in arrays.values()) or any(len({len(arrays[f]) for f in group}) > 1 for group in same):
+        same = [("keys", "parent", "paction")] + ([("enabled", "goal")] if level else [])
+        if (
+            any(a.ndim != 1 for a in arrays.values())
+            or any(len({len(arrays[f]) for f in group}) > 1 for group in same)
+            or (level and arrays["summary"].shape != (SUMMARY_LENGTH,))
+        ):
             raise InvalidInput(
                 f"{self._where(path.name)}: its columns do not fit together; expected the directory as fatline check "
                 "left it, or an empty one"

@@ -40,18 +40,44 @@ from numba import njit
 
 from ..lemmas.properties import Lemma
 from ..model.config import Model
-from ..model.lattice import KeyCodec
+from ..model.lattice import KeyCodec, RankedCodec
 from ..model.options import Goal
 from ..rules.registry import decider
 from ..schedulers.base import Expansion, KeyExpansion
 from .fast import pair_collides, snapshot_cells
 from .hashtable import HashTable, distinct, find
+from .keys import snapshot_key
 
 _CORNER_NONE, _CORNER_H, _CORNER_V = 0, 1, 2
 _GOALS = {Goal.VERTICAL_LINE: 0, Goal.ANY_LINE: 1, Goal.LINE_MEETS_DISCS: 2}
 
 
 # --- per-state analysis -------------------------------------------------------------------------
+@njit(cache=True)
+def _decode_ranked(keys: np.ndarray, n: int, h: int, cum: np.ndarray) -> np.ndarray:
+    """Canonical states ``(m, n, 2)`` of ranked keys (as :meth:`RankedCodec.decode`)."""
+    out = np.empty((len(keys), n, 2), dtype=np.int64)
+    top = cum.shape[1] - 1
+    for s in range(len(keys)):
+        rest = keys[s]
+        prev = 0
+        for i in range(n):
+            target = rest + cum[i, prev]
+            lo, hi = prev, top  # the largest d with cum[i, d] <= target
+            while lo < hi:
+                mid = (lo + hi + 1) // 2
+                if cum[i, mid] <= target:
+                    lo = mid
+                else:
+                    hi = mid - 1
+            rest -= cum[i, lo] - cum[i, prev]
+            code = lo - i
+            out[s, i, 0] = code // h
+            out[s, i, 1] = code % h
+            prev = lo + 1
+    return out
+
+
 @njit(cache=True)
 def _decode(keys: np.ndarray, n: int, bits: int, h: int) -> np.ndarray:
     """Canonical states ``(m, n, 2)`` of codec keys (as :meth:`KeyCodec.decode`)."""
@@ -186,30 +212,13 @@ def _analyse(
     exceeds the 8-bit packing (else 0)."""
     m, n = states.shape[0], states.shape[1]
     n_pairs = len(pi)
-    sentinel = side * side
     codes = np.empty(max(n - 1, 1), dtype=np.int64)
     nbrs = np.empty(n, dtype=np.int64)
     n_snap, n_pair, err = 0, 0, 0
     for s in range(m):
         st = 0
         for i in range(n):
-            c = 0
-            for j in range(n):
-                if j == i:
-                    continue
-                dx = states[s, j, 0] - states[s, i, 0]
-                dy = states[s, j, 1] - states[s, i, 1]
-                if dx * dx + dy * dy <= view2:
-                    code = (dx + reach) * side + dy + reach
-                    k = c
-                    while k > 0 and codes[k - 1] > code:
-                        codes[k] = codes[k - 1]
-                        k -= 1
-                    codes[k] = code
-                    c += 1
-            key = 0
-            for k in range(n - 1):
-                key = (key << cell_bits) | (codes[k] if k < c else sentinel)
+            key = snapshot_key(states[s], i, view2, reach, side, cell_bits, codes)
             slot = find(dtab, dshift, key)
             if slot < 0:
                 miss_snap[n_snap] = key
@@ -279,6 +288,7 @@ def _expand(
     w: int,
     h: int,
     bits: int,
+    cum: np.ndarray,
     src: np.ndarray,
     action: np.ndarray,
     flags: np.ndarray,
@@ -354,8 +364,15 @@ def _expand(
                             k -= 1
                         codes[k] = code
                     key = 0
-                    for i in range(n):
-                        key = (key << bits) | codes[i]
+                    if cum.shape[0]:  # ranked (:class:`RankedCodec`): the lexicographic rank of the codes
+                        prev = 0
+                        for i in range(n):
+                            d = codes[i] + i
+                            key += cum[i, d] - cum[i, prev]
+                            prev = d + 1
+                    else:
+                        for i in range(n):
+                            key = (key << bits) | codes[i]
                     keys[t] = key
                     fits[t] = True
                 else:
@@ -427,6 +444,32 @@ class CompiledEngine:
         self.decisions = HashTable(3)  # dx, dy, corner kind
         self.pairs = HashTable(1)  # collides?
         self._tables: dict[int, _Tables] = {}
+        self._counts: set[int] = set()
+        self._kept = (0, 0)
+
+    # --- answers kept between runs (:mod:`.answers`) ---------------------------------------------
+    def _remember(self, n: int) -> None:
+        """On the first batch: the answers an earlier run for this model and robot count kept."""
+        from .answers import answers_path, load_answers
+
+        self._counts.add(n)
+        got = load_answers(answers_path(self.model, n)) if len(self._counts) == 1 and not len(self.decisions) else None
+        if got is not None:
+            for table, rows in ((self.decisions, got["decisions"]), (self.pairs, got["pairs"])):
+                if len(rows):
+                    table.insert(rows[:, 0], rows[:, 1:])
+        self._kept = (len(self.decisions), len(self.pairs))
+
+    def save_answers(self) -> None:
+        """Keep the answers for the next run (one robot count per file; nothing new, nothing written)."""
+        from .answers import answers_path, save_answers
+
+        if len(self._counts) != 1 or (len(self.decisions), len(self.pairs)) == self._kept:
+            return
+        (n,) = self._counts
+        d, p = self.decisions.slots, self.pairs.slots
+        save_answers(answers_path(self.model, n), d[d[:, 0] != -1], p[p[:, 0] != -1])
+        self._kept = (len(self.decisions), len(self.pairs))
 
     # --- per robot count -----------------------------------------------------------------------
     def _tables_for(self, n: int) -> _Tables:
@@ -501,6 +544,8 @@ class CompiledEngine:
         m, n, _ = states.shape
         if self.cell_bits * max(n - 1, 1) > 63:
             raise ValueError(f"view radius {self.reach} with {n} robots does not pack snapshots into 63 bits")
+        if n not in self._counts:
+            self._remember(n)
         tables = self._tables_for(n)
         result, n_snap, n_pair, err, miss_snap, miss_pair = self._run_analyse(states, tables)
         rows = np.arange(m)
@@ -538,11 +583,12 @@ class CompiledEngine:
         keys = np.empty(t if want_keys else 0, dtype=np.int64)
         fits = np.empty(t if want_keys else 0, dtype=np.bool_)
         w, h, bits = (codec.w, codec.h, codec.bits) if codec is not None else (0, 0, 0)
+        cum = codec.cum if isinstance(codec, RankedCodec) else np.zeros((0, 1), dtype=np.int64)
         _expand(
             states, an.dest, an.enabled, an.coll, an.conn, tables.vstart, tables.vmasks, offsets,
             tables.pi, tables.pj, self.view2,
             Lemma.NO_COLLISION.flag, Lemma.CONNECTIVITY.flag, Lemma.RMA_FIXED.flag,
-            not want_keys, want_keys, w, h, bits,
+            not want_keys, want_keys, w, h, bits, cum,
             src, action, flags, after, keys, fits,
         )  # fmt: skip
         return src, action, flags, after, keys, fits
@@ -560,7 +606,10 @@ class CompiledEngine:
         keys in ``codec``: ``expand(codec.decode(keys))`` followed by canonical form, bound check and
         encoding, without materialising the successors."""
         keys = np.ascontiguousarray(keys, dtype=np.int64)
-        states = _decode(keys, codec.n, codec.bits, codec.h)
+        if isinstance(codec, RankedCodec):
+            states = _decode_ranked(keys, codec.n, codec.h, codec.cum)
+        else:
+            states = _decode(keys, codec.n, codec.bits, codec.h)
         an, tables = self._analyse(states)
         src, action, flags, _, succ, fits = self._run_expand(states, an, tables, codec)
         return KeyExpansion(an.enabled, an.goal, src, action, succ, flags, fits, np.ones(len(src), dtype=bool))

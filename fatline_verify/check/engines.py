@@ -32,6 +32,12 @@ def _compiled(system: TransitionSystem) -> Engine:
     return CompiledEngine(system)  # type: ignore[arg-type]
 
 
+def _compiled_async(system: TransitionSystem) -> Engine:
+    from .compiled_async import CompiledAsyncEngine
+
+    return CompiledAsyncEngine(system)
+
+
 def _fast_async(system: TransitionSystem) -> Engine:
     from .fast_async import FastAsyncEngine
 
@@ -40,7 +46,7 @@ def _fast_async(system: TransitionSystem) -> Engine:
 
 BUILDERS: dict[str, dict[str, Callable[[TransitionSystem], Engine]]] = {
     "rounds": {"compiled": _compiled, "fast": _fast, "scalar": _scalar},
-    "async": {"fast": _fast_async, "scalar": _scalar},
+    "async": {"compiled": _compiled_async, "fast": _fast_async, "scalar": _scalar},
 }
 """Per system family, the engines it has, by name."""
 

@@ -16,11 +16,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from itertools import pairwise
+from typing import TYPE_CHECKING
 
-import networkx as nx
 import numpy as np
 
 from .search import Exploration
+
+if TYPE_CHECKING:
+    import networkx as nx
 
 Labels = tuple[int, ...]
 Node = tuple[int, Labels]
@@ -61,12 +64,13 @@ def fair_cycles(ex: Exploration, nodes: np.ndarray) -> list[Lasso]:
     Only edges between such states count, and only edges the search follows (non-violating unless
     ``after_violation == "continue"``).
     """
-    ok = (ex.edge_dst >= 0) & nodes[ex.edge_src] & nodes[np.maximum(ex.edge_dst, 0)]
-    src, dst, mask = ex.edge_src[ok], ex.edge_dst[ok], ex.edge_action[ok]
+    src, dst, mask = ex.followed_edges(nodes)  # recomputed: the search keeps no transitions
     keep = _trim(src, dst, ex.n_states)
     src, dst, mask = src[keep], dst[keep], mask[keep]
     if not len(src):
         return []
+    import networkx as nx  # imported when there is a cycle to look at: a check's start-up does not pay for it
+
     graph = nx.MultiDiGraph()
     for s, d, k in zip(src.tolist(), dst.tolist(), mask.tolist(), strict=True):
         graph.add_edge(s, d, mask=k)
@@ -86,6 +90,8 @@ def fair_cycles(ex: Exploration, nodes: np.ndarray) -> list[Lasso]:
 
 
 def _product(ex: Exploration, sub: nx.MultiDiGraph, start: int, labels: Labels) -> nx.MultiDiGraph:
+    import networkx as nx
+
     product = nx.MultiDiGraph()
     todo = [(start, labels)]
     product.add_node(todo[0])
@@ -128,6 +134,8 @@ def _fair_cycle(ex: Exploration, comp: nx.MultiDiGraph) -> Lasso | None:
         if edge is None:
             return None
         targets.append((edge[0], (edge[1], edge[2])))
+    import networkx as nx
+
     start = min(comp.nodes)
     steps: list[tuple[int, int]] = []
     here = start

@@ -10,13 +10,24 @@ counted (``escaped``, ``off_lattice``) and make liveness verdicts INCONCLUSIVE. 
 actions are the transition system's (:class:`~fatline_verify.schedulers.base.TransitionSystem`); the
 search knows nothing of schedulers.
 
-Only packed keys and compact per-state and per-transition columns are kept; positions are decoded from
-keys on demand (:meth:`Exploration.state_array`). The search stops cleanly, before the next level, when
-it holds more than ``max_states`` states or its arrays more than ``max_bytes`` bytes.
+The compact store (docs/checker.md, "The compact store"): per state only its packed key, parent,
+parent action, enabled robots and goal are kept (depth and "expanded" follow from the level sizes);
+transitions are folded, batch by batch, into per-level summaries (their counts and, per violation flag
+bit, the least violating ``(source id, action)``), which is all a safety verdict needs; witnesses
+follow parents; the fair-cycle search recomputes the transitions it needs with the search's engine
+(:meth:`Exploration.followed_edges`), and so do the ``edge_*`` columns, on demand. Positions are
+decoded from keys on demand (:meth:`Exploration.state_array`). When ``max_bytes`` says the next level
+fits only that way, the levels move to disk (raw column files read back as memory maps, TLC's
+disk-backed state set being the model): the same results, less memory. The search stops cleanly,
+before the next level, when it holds more than ``max_states`` states or, levels on disk, its arrays
+would still pass ``max_bytes``.
 """
 
 from __future__ import annotations
 
+import shutil
+import tempfile
+import weakref
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from enum import Enum
@@ -26,12 +37,12 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from ..lemmas.registry import CORE_FLAGS
+from ..lemmas.registry import FLAG_BITS
 from ..model.config import Model
-from ..resources import BYTES_PER_STATE, PEAK_FACTOR
+from ..resources import PEAK_FACTOR
 from ..schedulers.base import Codec, Engine, TransitionSystem
 from .engines import engine_for
-from .shard import COLUMNS, Level, Shard, followed, owners
+from .shard import COLUMNS, SUMMARY_COUNTS, Level, Shard, enabled_dtype, fold_summaries, followed, owners
 
 ProgressTick = Callable[[int, int, int, int], None]
 """``tick(level, done, frontier, states)``."""
@@ -45,13 +56,13 @@ class Limit(Enum):
     MAX_MEMORY = "max-memory"
 
 
-_STATE_COLUMNS = ("keys", "parent", "parent_action", "depth", "expanded", "enabled", "goal")
-_EDGE_COLUMNS = ("edge_src", "edge_dst", "edge_action", "edge_flags", "edge_fits", "edge_exact")
+_STATE_COLUMNS = ("keys", "parent", "parent_action", "enabled", "goal")
 
 
 @dataclass(slots=True)
 class Exploration:
-    """The explored transition system (arrays indexed by state id / transition number)."""
+    """The explored transition system: per state (indexed by id) its key, parent, enabled robots and
+    goal; the transitions as counts and least violating ones, recomputed on demand."""
 
     model: Model = field(repr=False)
     system: TransitionSystem = field(repr=False)
@@ -62,23 +73,19 @@ class Exploration:
     n_initial: int
     codec: Codec = field(repr=False)
     keys: np.ndarray = field(repr=False)
+    """Sorted within each level (ids are given in key order, level by level)."""
     parent: np.ndarray = field(repr=False)
     parent_action: np.ndarray = field(repr=False)
-    depth: np.ndarray = field(repr=False)
-    expanded: np.ndarray = field(repr=False)
+    level_sizes: np.ndarray = field(repr=False)
+    """States first reached at each depth."""
+    n_expanded: int
+    """The states with ids below this were expanded (a stopped search leaves the rest)."""
     enabled: np.ndarray = field(repr=False)
+    """The enabled robots' mask (0 for unexpanded states)."""
     goal: np.ndarray = field(repr=False)
-    edge_src: np.ndarray = field(repr=False)
-    edge_dst: np.ndarray = field(repr=False)
-    """Destination id, or -1 when the destination was not explored (outside the bound, off the
-    lattice, reached only through a violating step, or beyond a limit)."""
-    edge_action: np.ndarray = field(repr=False)
-    """The step's action code, in the source state's canonical robot order."""
-    edge_flags: np.ndarray = field(repr=False)
-    edge_fits: np.ndarray = field(repr=False)
-    """The destination is on the lattice and inside the bound."""
-    edge_exact: np.ndarray = field(repr=False)
-    """The destination is on the system's lattice (``False``: counted in :attr:`off_lattice`)."""
+    summary: np.ndarray = field(repr=False)
+    """The transitions' counts (:data:`.shard.SUMMARY_COUNTS`) and least ``(source id, action)`` per
+    violation flag bit (:func:`.shard.summarise`)."""
     limit: Limit = Limit.NONE
     after_violation: str = "stop"
     needed_bytes: int = 0
@@ -86,6 +93,11 @@ class Exploration:
     the next level's estimate, times :data:`~fatline_verify.resources.PEAK_FACTOR`)."""
     initial_window: tuple[int, int] | None = None
     """The window the initial configurations came from, when not the bound."""
+    on_disk: bool = False
+    """The levels were moved to disk (memory-mapped columns)."""
+    expander: Shard | None = field(default=None, repr=False)
+    """Recomputes transitions (the search's own engine, its caches warm, when it ran in this process)."""
+    _cache: dict[str, Any] = field(default_factory=dict, repr=False)
 
     @property
     def start_window(self) -> tuple[int, int]:
@@ -99,41 +111,70 @@ class Exploration:
     def n_states(self) -> int:
         return len(self.keys)
 
+    def _count(self, name: str) -> int:
+        return int(self.summary[SUMMARY_COUNTS.index(name)])
+
     @property
     def n_transitions(self) -> int:
-        return len(self.edge_src)
+        return self._count("transitions")
 
     @property
     def escaped(self) -> int:
         """Transitions from explored states to states outside the bound or off the lattice."""
-        return int((~self.edge_fits).sum())
+        return self._count("escaped")
 
     @property
     def off_lattice(self) -> int:
         """Transitions to states whose positions leave the system's lattice (ASYNC: a K-fine step)."""
-        return int((~self.edge_exact).sum())
+        return self._count("off_lattice")
 
     @property
     def violating_only(self) -> int:
         """Violating transitions (within the bound) whose destination no followed transition reaches, so it
         is not explored: a count of transitions, not of states (two may lead to one state)."""
-        return int(((self.edge_dst < 0) & self.edge_fits & ((self.edge_flags & CORE_FLAGS) != 0)).sum())
+        return self._count("violating_only")
+
+    def least_violating(self, flag: int) -> tuple[int, int] | None:
+        """The least ``(source id, action)`` among the transitions whose flags have the bit ``flag``."""
+        bit = int(flag).bit_length() - 1
+        if not 0 <= bit < FLAG_BITS or flag != 1 << bit:
+            raise ValueError(f"flag={flag}: expected one bit of the violation flags")
+        i = len(SUMMARY_COUNTS) + 2 * bit
+        return None if self.summary[i] < 0 else (int(self.summary[i]), int(self.summary[i + 1]))
 
     @property
     def nbytes(self) -> int:
-        """Bytes held by the exploration's arrays."""
-        return sum(int(getattr(self, f).nbytes) for f in (*_STATE_COLUMNS, *_EDGE_COLUMNS))
+        """Bytes held by the exploration's arrays (in memory or, levels on disk, mapped)."""
+        return sum(int(getattr(self, f).nbytes) for f in _STATE_COLUMNS)
+
+    @property
+    def depth(self) -> np.ndarray:
+        """Every state's depth (its level), computed from the level sizes."""
+        got = self._cache.get("depth")
+        if got is None:
+            got = self._cache["depth"] = np.repeat(
+                np.arange(len(self.level_sizes), dtype=np.int32), self.level_sizes
+            )
+        return got  # type: ignore[no-any-return]
+
+    @property
+    def expanded(self) -> np.ndarray:
+        """Whether each state was expanded (the ids below :attr:`n_expanded`)."""
+        got = self._cache.get("expanded")
+        if got is None:
+            got = self._cache["expanded"] = np.arange(self.n_states) < self.n_expanded
+        return got  # type: ignore[no-any-return]
 
     @property
     def states(self) -> np.ndarray:
         """Every state's canonical array, decoded (small searches; large ones use :meth:`state_array`)."""
-        return self.codec.decode(self.keys)
+        return self.codec.decode(np.asarray(self.keys))
 
     def state_array(self, ids: np.ndarray | int) -> np.ndarray:
         """The canonical array states of ``ids`` (one state for an int), decoded from their keys."""
         if isinstance(ids, int | np.integer):
-            return self.codec.decode(self.keys[[int(ids)]])[0]
-        return self.codec.decode(self.keys[ids])
+            return self.codec.decode(np.asarray(self.keys[[int(ids)]]))[0]
+        return self.codec.decode(np.asarray(self.keys[ids]))
 
     def path(self, state_id: int) -> list[tuple[int, int]]:
         """``[(source id, action), ...]`` from an initial state to ``state_id``."""
@@ -148,6 +189,87 @@ class Exploration:
         while self.parent[state_id] >= 0:
             state_id = int(self.parent[state_id])
         return state_id
+
+    # --- transitions, recomputed ------------------------------------------------------------------
+    def ids_of(self, keys: np.ndarray) -> np.ndarray:
+        """The ids of ``keys`` (-1 for a key not explored): looked up level by level (each is sorted)."""
+        out = np.full(len(keys), -1, dtype=np.int64)
+        start = 0
+        for size in self.level_sizes.tolist():
+            level = self.keys[start : start + size]
+            if size and len(keys):
+                pos = np.minimum(np.searchsorted(level, keys), size - 1)
+                hit = level[pos] == keys
+                out[hit] = start + pos[hit]
+            start += size
+        return out
+
+    def _expander(self) -> Shard:
+        if self.expander is None:
+            eng = engine_for(self.system, self.engine)
+            self.expander = Shard(self.system, self.n, self.window, eng, 0, 1, self.after_violation)
+        return self.expander
+
+    def transitions(self, ids: np.ndarray) -> tuple[np.ndarray, ...]:
+        """Every transition of the expanded states ``ids`` (ascending), recomputed: ``(src, dst, action,
+        flags, fits, exact)`` in (source id, action) order; ``dst`` is -1 where the search does not follow
+        the transition (outside the bound, violating under ``after_violation="stop"``) or beyond a limit."""
+        ids = np.asarray(ids, dtype=np.int64)
+        tr = self._expander().transitions(np.asarray(self.keys[ids]), ids)
+        follow = np.flatnonzero(followed(tr.fits, tr.flags, self.after_violation))
+        id_type = np.int32 if self.n_states < 2**31 - 1 else np.int64
+        dst = np.full(len(tr.src), -1, dtype=id_type)
+        dst[follow] = self.ids_of(tr.key)
+        return tr.src.astype(id_type, copy=False), dst, tr.action, tr.flags, tr.fits, tr.exact
+
+    def followed_edges(self, nodes: np.ndarray, batch: int = 200_000) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(src, dst, action)`` of the followed transitions between states with ``nodes[id]`` true (only
+        expanded states have transitions), recomputed ``batch`` sources at a time."""
+        ids = np.flatnonzero(nodes[: self.n_expanded])
+        parts: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
+        for start in range(0, len(ids), batch):
+            src, dst, action, _, _, _ = self.transitions(ids[start : start + batch])
+            ok = (dst >= 0) & nodes[np.maximum(dst, 0)]
+            parts.append((src[ok], dst[ok], action[ok]))
+        if not parts:
+            return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int32)
+        return tuple(np.concatenate([p[k] for p in parts]) for k in range(3))  # type: ignore[return-value]
+
+    def _edges(self) -> tuple[np.ndarray, ...]:
+        got = self._cache.get("edges")
+        if got is None:
+            got = self._cache["edges"] = self.transitions(np.arange(self.n_expanded, dtype=np.int64))
+        return got  # type: ignore[no-any-return]
+
+    @property
+    def edge_src(self) -> np.ndarray:
+        """Every transition's source id (recomputed on first use, then kept: small searches only)."""
+        return self._edges()[0]
+
+    @property
+    def edge_dst(self) -> np.ndarray:
+        """Destination id, or -1 when the destination was not explored (outside the bound, off the
+        lattice, reached only through a violating step, or beyond a limit)."""
+        return self._edges()[1]
+
+    @property
+    def edge_action(self) -> np.ndarray:
+        """The step's action code, in the source state's canonical robot order."""
+        return self._edges()[2]
+
+    @property
+    def edge_flags(self) -> np.ndarray:
+        return self._edges()[3]
+
+    @property
+    def edge_fits(self) -> np.ndarray:
+        """The destination is on the lattice and inside the bound."""
+        return self._edges()[4]
+
+    @property
+    def edge_exact(self) -> np.ndarray:
+        """The destination is on the system's lattice (``False``: counted in :attr:`off_lattice`)."""
+        return self._edges()[5]
 
 
 # --- shard pools --------------------------------------------------------------------------------------
@@ -185,70 +307,108 @@ class ShardPool(Protocol):
 # --- the search ---------------------------------------------------------------------------------------
 
 
+class _Disk:
+    """A directory of raw column files, each read back as a read-only memory map and unlinked at once
+    (the map keeps its pages; the kernel may drop them and read them again), removed with the search."""
+
+    def __init__(self) -> None:
+        self.directory = Path(tempfile.mkdtemp(prefix="fatline-levels-"))
+        self._count = 0
+        self._finalizer = weakref.finalize(self, shutil.rmtree, self.directory, True)
+
+    def _path(self) -> Path:
+        self._count += 1
+        return self.directory / f"column-{self._count:06d}.bin"
+
+    def put(self, a: np.ndarray) -> np.ndarray:
+        """``a`` as a memory map of a file holding its bytes (an empty array stays as it is)."""
+        if not len(a) or isinstance(a, np.memmap):
+            return a
+        path = self._path()
+        np.ascontiguousarray(a).tofile(path)
+        out = np.memmap(path, dtype=a.dtype, mode="r", shape=a.shape)
+        path.unlink()
+        return out
+
+    def join(self, parts: list[np.ndarray], dtype: Any) -> np.ndarray:
+        """The concatenation of ``parts``, written part by part into one mapped file."""
+        total = sum(len(p) for p in parts)
+        if not total:
+            return np.zeros(0, dtype=dtype)
+        path = self._path()
+        out = np.memmap(path, dtype=dtype, mode="w+", shape=(total,))
+        at = 0
+        for p in parts:
+            out[at : at + len(p)] = p
+            at += len(p)
+        out.flush()
+        path.unlink()
+        return out
+
+
+def _in_memory(a: np.ndarray) -> int:
+    return 0 if isinstance(a, np.memmap) else int(a.nbytes)
+
+
 @dataclass(slots=True)
 class _Records:
-    """The coordinator's growing columns, one list entry per level (keys/parents) or per expansion."""
+    """The coordinator's growing columns, one list entry per level (keys, parents) or per expansion
+    (enabled, goal, the summary of its transitions)."""
 
     keys: list[np.ndarray] = field(default_factory=list)
     parent: list[np.ndarray] = field(default_factory=list)
     paction: list[np.ndarray] = field(default_factory=list)
-    ids: list[np.ndarray] = field(default_factory=list)
     enabled: list[np.ndarray] = field(default_factory=list)
     goal: list[np.ndarray] = field(default_factory=list)
-    src: list[np.ndarray] = field(default_factory=list)
-    action: list[np.ndarray] = field(default_factory=list)
-    key: list[np.ndarray] = field(default_factory=list)
-    flags: list[np.ndarray] = field(default_factory=list)
-    fits: list[np.ndarray] = field(default_factory=list)
-    exact: list[np.ndarray] = field(default_factory=list)
+    summary: list[np.ndarray] = field(default_factory=list)
+    disk: _Disk | None = None
 
     def nbytes(self) -> int:
-        return sum(int(a.nbytes) for name in self.__slots__ for a in getattr(self, name))
+        """Bytes held in memory (columns moved to disk not counted)."""
+        return sum(_in_memory(a) for name in _RECORD_COLUMNS for a in getattr(self, name))
+
+    def _put(self, a: np.ndarray) -> np.ndarray:
+        return a if self.disk is None else self.disk.put(a)
 
     def add_level(self, keys: np.ndarray, parent: np.ndarray, paction: np.ndarray) -> None:
-        self.keys.append(keys)
-        self.parent.append(parent)
-        self.paction.append(paction)
+        id_type = np.int32 if len(parent) == 0 or int(parent.max()) < 2**31 - 1 else np.int64
+        self.keys.append(self._put(keys))
+        self.parent.append(self._put(parent.astype(id_type, copy=False)))
+        self.paction.append(self._put(paction.astype(np.int32, copy=False)))
 
     def add_expansion(self, lv: Level) -> None:
-        """One level's expansion (already compacted by the shard: int32 ids and actions, uint8 flags)."""
-        self.add_expansion_arrays(
-            lv.ids, lv.enabled, lv.goal, lv.src, lv.action, lv.key, lv.flags, lv.fits, lv.exact
-        )  # fmt: skip
+        """One level's expansion: per state enabled and goal, and the summary of its transitions."""
+        self.add_expansion_arrays(lv.enabled, lv.goal, lv.summary)
 
     def add_expansion_arrays(self, *arrays: np.ndarray) -> None:
         """The columns of one expansion in :data:`.shard.COLUMNS` order."""
         for name, a in zip(COLUMNS, arrays, strict=True):
-            getattr(self, name).append(a)
+            getattr(self, name).append(a if name == "summary" else self._put(a))
+
+    def to_disk(self) -> None:
+        """Move every level's columns to disk, and the levels to come."""
+        if self.disk is None:
+            self.disk = _Disk()
+        for name in _RECORD_COLUMNS:
+            parts = getattr(self, name)
+            parts[:] = [self.disk.put(a) for a in parts]
 
 
-def _merge_levels(parts: list[Level], after_violation: str) -> Level:
-    """The shards' expansions of one level as one, transitions in (source id, action) order."""
+_RECORD_COLUMNS = ("keys", "parent", "paction", "enabled", "goal")
+
+
+def _merge_levels(parts: list[Level], n: int) -> Level:
+    """The shards' expansions of one level as one: states in id order, summaries folded."""
     if len(parts) == 1:
         return parts[0]
-    cat = np.concatenate
-    ids = cat([p.ids for p in parts])
+    ids = np.concatenate([p.ids for p in parts])
     by_id = np.argsort(ids, kind="stable")
-    src = cat([p.src for p in parts])
-    by_src = np.argsort(src, kind="stable")  # each source lives in one shard, actions already ascending
-
-    def edges(name: str) -> np.ndarray:
-        return cat([getattr(p, name) for p in parts])[by_src]  # type: ignore[no-any-return]
-
-    flags, fits = cat([p.flags for p in parts]), cat([p.fits for p in parts])
-    follow = followed(fits, flags, after_violation)
-    keys = np.zeros(len(src), dtype=parts[0].key.dtype)
-    keys[follow] = cat([p.key for p in parts])
+    enabled = np.concatenate([p.enabled for p in parts]).astype(enabled_dtype(n), copy=False)
     return Level(
         ids[by_id],
-        cat([p.enabled for p in parts])[by_id],
-        cat([p.goal for p in parts])[by_id],
-        src[by_src],
-        edges("action"),
-        keys[by_src][follow[by_src]],
-        flags[by_src],
-        fits[by_src],
-        edges("exact"),
+        enabled[by_id],
+        np.concatenate([p.goal for p in parts])[by_id],
+        fold_summaries([p.summary for p in parts]),
         [],
     )
 
@@ -282,11 +442,13 @@ def explore_keys(
     pool: ShardPool | None = None,
     checkpoint: Path | None = None,
     initial_window: tuple[int, int] | None = None,
+    on_disk: bool = False,
 ) -> Exploration:
     """Breadth-first search from the sorted keys ``initial`` (in ``system.codec(n, bound)``).
 
     ``pool`` shares the work among shards (default: one in this process, running ``engine``);
-    ``checkpoint`` is a directory the search saves itself to after every level and resumes from.
+    ``checkpoint`` is a directory the search saves itself to after every level and resumes from;
+    ``on_disk`` keeps the levels on disk from the start (otherwise ``max_bytes`` decides).
     """
     from .checkpoint import Checkpoint
 
@@ -298,30 +460,42 @@ def explore_keys(
         pool = LocalShards([Shard(system, n, bound, eng, 0, 1, after_violation)])
     count = pool.count
     rec = _Records()
+    if on_disk:
+        rec.to_disk()
     saved = Checkpoint(checkpoint, system.model, n, bound, initial, after_violation)
     if not saved.load(rec):
         rec.add_level(initial, np.full(len(initial), -1, dtype=np.int64), np.zeros(len(initial), dtype=np.int32))
         saved.start(rec)
-    visited = np.concatenate(rec.keys)
-    frontier = rec.keys[-1]
+    visited = np.concatenate(rec.keys) if len(rec.keys) > 1 else np.asarray(rec.keys[0])
+    frontier = np.asarray(rec.keys[-1])
     frontier_ids = np.arange(len(visited) - len(frontier), len(visited), dtype=np.int64)
     limit, needed = Limit.NONE, 0
-    owner_all, owner_front = owners(visited, count), owners(frontier, count)
-    pool.map(
-        "seed",
-        [
-            (np.sort(visited[owner_all == o]), frontier[owner_front == o], frontier_ids[owner_front == o])
-            for o in range(count)
-        ],
-    )
+    if count == 1:  # no copies: the shard's visited set is sorted keys, the frontier its last level
+        pool.map("seed", [(np.sort(visited) if len(rec.keys) > 1 else visited, frontier, frontier_ids)])
+    else:
+        owner_all, owner_front = owners(visited, count), owners(frontier, count)
+        pool.map(
+            "seed",
+            [
+                (np.sort(visited[owner_all == o]), frontier[owner_front == o], frontier_ids[owner_front == o])
+                for o in range(count)
+            ],
+        )
+        del owner_all, owner_front
+    del visited
     total = sum(len(k) for k in rec.keys)
     level = len(rec.keys) - 1
     while len(frontier) and limit is Limit.NONE:
-        held = rec.nbytes() + sum(pool.map("visited_bytes", [()] * count))
         if max_states is not None and total > max_states:
             limit = Limit.MAX_STATES
             break
-        projected = int((held + _next_level_estimate(rec, len(frontier))) * PEAK_FACTOR)
+        visited_bytes = sum(pool.map("visited_bytes", [()] * count))
+        held = rec.nbytes() + visited_bytes
+        projected = int((held + _next_level_estimate(rec, len(frontier), visited_bytes)) * PEAK_FACTOR)
+        if max_bytes is not None and projected > max_bytes and rec.disk is None:
+            rec.to_disk()  # the levels move to disk: the next level may fit that way
+            held = rec.nbytes() + visited_bytes
+            projected = int((held + _next_level_estimate(rec, len(frontier), visited_bytes)) * PEAK_FACTOR)
         if max_bytes is not None and projected > max_bytes:
             limit, needed = Limit.MAX_MEMORY, projected
             break
@@ -329,29 +503,41 @@ def explore_keys(
             lv_parts = [pool.shards[0].expand(batch, partial(_tick, progress, level, total))]
         else:
             lv_parts = pool.map("expand", [(batch,)] * count)
-        lv = _merge_levels(lv_parts, after_violation)
+        lv = _merge_levels(lv_parts, n)
         rec.add_expansion(lv)
         merged = pool.map("merge", [([p.routed[o] for p in lv_parts],) for o in range(count)])
         new_keys = np.concatenate([m[0] for m in merged])
         new_src = np.concatenate([m[1] for m in merged])
         new_act = np.concatenate([m[2] for m in merged])
-        order = np.argsort(new_keys, kind="stable") if count > 1 else np.arange(len(new_keys))
-        rank = np.empty(len(order), dtype=np.int64)
-        rank[order] = np.arange(len(order), dtype=np.int64)
-        new_ids = total + rank
         bounds = np.cumsum([0] + [len(m[0]) for m in merged])
-        pool.map("assign", [(new_ids[bounds[o] : bounds[o + 1]],) for o in range(count)])
-        frontier = new_keys[order]
-        rec.add_level(frontier, new_src[order], new_act[order].astype(np.int32))
+        del merged, lv_parts, lv
+        if count > 1:
+            order = np.argsort(new_keys, kind="stable")
+            rank = np.empty(len(order), dtype=np.int64)
+            rank[order] = np.arange(len(order), dtype=np.int64)
+            new_ids = total + rank
+            pool.map("assign", [(new_ids[bounds[o] : bounds[o + 1]],) for o in range(count)])
+            frontier, new_src, new_act = new_keys[order], new_src[order], new_act[order]
+            del order, rank, new_ids
+        else:  # one shard: its new keys are sorted already
+            pool.map("assign", [(np.arange(total, total + len(new_keys), dtype=np.int64),)])
+            frontier = new_keys
+        rec.add_level(frontier, new_src, new_act)
         level += 1
         total += len(frontier)
         saved.save_level(rec, level)
         if progress:
             progress(level, len(frontier), len(frontier), total)
+    expander = None
     if own_pool:
+        expander = pool.shards[0]  # type: ignore[attr-defined]
+        if limit is Limit.NONE and hasattr(expander.engine, "save_answers"):
+            expander.engine.save_answers()  # the model's answers, for the next run (:mod:`.answers`)
+        expander.seed(np.zeros(0, dtype=codec.dtype), np.zeros(0, dtype=codec.dtype), np.zeros(0, dtype=np.int64))
         pool.close()
     ex = _build(system, n, bound, engine_name, codec, rec, limit, needed, after_violation)
     ex.initial_window = None if initial_window == bound else initial_window
+    ex.expander = expander
     return ex
 
 
@@ -359,14 +545,16 @@ def _tick(progress: ProgressTick, level: int, states: int, done: int, frontier: 
     progress(level, done, frontier, states)
 
 
-def _next_level_estimate(rec: _Records, frontier: int) -> int:
-    """Bytes the next level will add: the last level's bytes per expanded state times the frontier."""
-    if not rec.ids:
-        return BYTES_PER_STATE * frontier
-    last = sum(int(getattr(rec, f)[-1].nbytes) for f in ("ids", "enabled", "goal", "src", "action", "key"))
-    last += sum(int(getattr(rec, f)[-1].nbytes) for f in ("flags", "fits", "exact"))
-    per_state = last / max(1, len(rec.ids[-1])) + 3 * (rec.keys[-1].itemsize + 12)
-    return int(per_state * frontier)
+def _next_level_estimate(rec: _Records, frontier: int, visited_bytes: int) -> int:
+    """Bytes the next level adds at its peak, for a level as much larger than the frontier as the last
+    one was than the one before (at least as large): per frontier state its id, enabled and goal (6)
+    and its candidate successors (about 1.5, 16 bytes each); per new state the candidates' sorted
+    set and its sort (40), the new level's columns (16) and its key and mask in the merged visited
+    set (9); and a copy of the visited set in the merge."""
+    growth = 1.0 if len(rec.keys) < 2 else max(1.0, len(rec.keys[-1]) / max(1, len(rec.keys[-2])))
+    key = rec.keys[-1].itemsize
+    new = frontier * growth
+    return int(frontier * (6 + 1.5 * (key + 8)) + new * (40 + 16 + key + 1) + visited_bytes)
 
 
 def _build(
@@ -380,39 +568,28 @@ def _build(
     needed: int,
     after_violation: str,
 ) -> Exploration:
-    """The finished search as one :class:`Exploration` (destination ids looked up by key)."""
+    """The finished search as one :class:`Exploration` (each column's parts joined and let go of, so
+    the peak stays near the finished arrays; levels on disk are joined on disk)."""
 
     def take(name: str, dtype: Any) -> np.ndarray:
-        """Concatenate one column and let go of its parts (the peak stays near the finished arrays)."""
         parts = getattr(rec, name)
-        out = np.concatenate(parts) if parts else np.zeros(0, dtype=dtype)
+        if rec.disk is not None:
+            out = rec.disk.join(parts, dtype)
+        else:
+            out = np.concatenate(parts).astype(dtype, copy=False) if parts else np.zeros(0, dtype=dtype)
         parts.clear()
         return out  # type: ignore[no-any-return]
 
     n_initial = len(rec.keys[0])
-    depth = np.concatenate([np.full(len(k), d, dtype=np.int32) for d, k in enumerate(rec.keys)])
-    all_keys = take("keys", codec.dtype)
-    total = len(all_keys)
+    level_sizes = np.array([len(k) for k in rec.keys], dtype=np.int64)
+    total = int(level_sizes.sum())
     id_type = np.int32 if total < 2**31 - 1 else np.int64
-    n_expanded = sum(len(i) for i in rec.ids)
-    expanded = np.zeros(total, dtype=bool)
-    expanded[:n_expanded] = True
-    enabled = np.zeros(total, dtype=np.int32)
-    goal = np.zeros(total, dtype=bool)
-    enabled[:n_expanded] = take("enabled", np.int32)
-    goal[:n_expanded] = take("goal", bool)
-    rec.ids.clear()
-    edge_fits = take("fits", bool)
-    edge_flags = take("flags", np.uint8)
-    # Only the transitions the search follows have a destination id (a violating one's is -1 under "stop").
-    wanted = np.nonzero(followed(edge_fits, edge_flags, after_violation))[0]
-    looked = take("key", codec.dtype)
-    by_key = np.argsort(all_keys, kind="stable")
-    pos = np.minimum(np.searchsorted(all_keys[by_key], looked), total - 1)
-    hit = all_keys[by_key[pos]] == looked
-    dst = np.full(len(edge_fits), -1, dtype=id_type)
-    dst[wanted[hit]] = by_key[pos[hit]]
-    del by_key, pos, hit, looked, wanted
+    n_expanded = sum(len(g) for g in rec.goal)
+    edtype = enabled_dtype(n)
+    enabled_parts = rec.enabled + [np.zeros(total - n_expanded, dtype=edtype)]
+    goal_parts = rec.goal + [np.zeros(total - n_expanded, dtype=bool)]
+    rec.enabled, rec.goal = enabled_parts, goal_parts
+    summary = fold_summaries(rec.summary)
     return Exploration(
         model=system.model,
         system=system,
@@ -421,22 +598,18 @@ def _build(
         engine=engine_name,
         n_initial=n_initial,
         codec=codec,
-        keys=all_keys,
-        parent=take("parent", np.int64).astype(id_type),
+        keys=take("keys", codec.dtype),
+        parent=take("parent", id_type),
         parent_action=take("paction", np.int32),
-        depth=depth,
-        expanded=expanded,
-        enabled=enabled,
-        goal=goal,
-        edge_src=take("src", np.int64).astype(id_type, copy=False),
-        edge_dst=dst,
-        edge_action=take("action", np.int32),
-        edge_flags=edge_flags,
-        edge_fits=edge_fits,
-        edge_exact=take("exact", bool),
+        level_sizes=level_sizes,
+        n_expanded=n_expanded,
+        enabled=take("enabled", edtype),
+        goal=take("goal", bool),
+        summary=summary,
         limit=limit,
         after_violation=after_violation,
         needed_bytes=needed,
+        on_disk=rec.disk is not None,
     )
 
 

@@ -11,16 +11,17 @@ independent of P.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from ..lemmas.registry import CORE_FLAGS, extra_flags, registered
+from ..lemmas.registry import CORE_FLAGS, FLAG_BITS, extra_flags, registered
 from ..model.config import Model
 from ..schedulers.base import Engine, TransitionSystem, expand_keys
 from ..schedulers.systems import system_for
+from . import keys as keyset
 from .engines import engine_for
 
 _MIX = np.uint64(0x9E3779B97F4A7C15)
@@ -40,25 +41,87 @@ def owners(keys: np.ndarray, count: int) -> np.ndarray:
     return ((mixed >> np.uint64(33)) % np.uint64(count)).astype(np.int64)
 
 
+SUMMARY_COUNTS = ("transitions", "escaped", "off_lattice", "violating_only")
+"""The counts at the head of a level's :data:`Level.summary`."""
+
+SUMMARY_LENGTH = len(SUMMARY_COUNTS) + 2 * FLAG_BITS
+
+
+def empty_summary() -> np.ndarray:
+    """A summary of no transitions: zero counts, no least violating transition for any flag bit."""
+    out = np.zeros(SUMMARY_LENGTH, dtype=np.int64)
+    out[len(SUMMARY_COUNTS) :] = -1
+    return out
+
+
+def summarise(src: np.ndarray, action: np.ndarray, flags: np.ndarray, fits: np.ndarray, exact: np.ndarray,
+              after_violation: str) -> np.ndarray:  # fmt: skip
+    """The summary of transitions in (source id, action) order: their counts (as :data:`SUMMARY_COUNTS`)
+    and, per flag bit, the least ``(source id, action)`` whose flags have that bit (``-1, -1``: none).
+
+    ``violating_only`` counts the violating transitions inside the bound that the search does not follow
+    (under ``after_violation="stop"`` no followed transition is violating, so their destinations are
+    not reached through them)."""
+    out = empty_summary()
+    core = fits & ((flags & CORE_FLAGS) != 0)
+    out[:4] = (len(src), int((~fits).sum()), int((~exact).sum()), 0 if after_violation == "continue" else int(core.sum()))
+    for bit in range(FLAG_BITS):
+        hit = np.flatnonzero(flags & (1 << bit))
+        if len(hit):
+            out[4 + 2 * bit : 6 + 2 * bit] = (src[hit[0]], action[hit[0]])
+    return out
+
+
+def fold_summaries(parts: list[np.ndarray]) -> np.ndarray:
+    """Summaries of disjoint sets of transitions as one: counts added, the least transition per bit."""
+    out = empty_summary()
+    for part in parts:
+        out[:4] += part[:4]
+        for bit in range(FLAG_BITS):
+            i = 4 + 2 * bit
+            if part[i] >= 0 and (out[i] < 0 or (part[i], part[i + 1]) < (out[i], out[i + 1])):
+                out[i : i + 2] = part[i : i + 2]
+    return out
+
+
 @dataclass(slots=True)
-class Level:
-    """What a shard's expansion of its frontier gives the coordinator."""
+class Transitions:
+    """Every transition of some expanded states, in (source id, action) order."""
 
     ids: np.ndarray
     """(m,) the expanded states' ids (ascending)."""
     enabled: np.ndarray
     goal: np.ndarray
     src: np.ndarray
-    """(t,) the source state's id, transitions ordered by (source id, action)."""
+    """(t,) the source state's id."""
     action: np.ndarray
     key: np.ndarray
     """The destination keys of the followed transitions (:func:`followed`), in transition order."""
     flags: np.ndarray
     fits: np.ndarray
     exact: np.ndarray
+
+
+@dataclass(slots=True)
+class Level:
+    """What a shard's expansion of its frontier gives the coordinator: per state, and a summary of the
+    transitions (docs/checker.md, "The compact store"); the transitions themselves are not kept."""
+
+    ids: np.ndarray
+    """(m,) the expanded states' ids (ascending)."""
+    enabled: np.ndarray
+    """(m,) the enabled robots' mask, in :func:`enabled_dtype`."""
+    goal: np.ndarray
+    summary: np.ndarray
+    """(:data:`SUMMARY_LENGTH`,) int64: counts and the least violating transition per flag bit."""
     routed: list[tuple[np.ndarray, np.ndarray, np.ndarray]]
     """Per owner shard: the candidate successors ``(key, source id, action)`` it must de-duplicate,
     each key once, with its least ``(source id, action)`` among this shard's transitions."""
+
+
+def enabled_dtype(n: int) -> Any:
+    """The smallest unsigned integer type holding a mask of ``n`` robots."""
+    return np.uint8 if n <= 8 else np.uint16 if n <= 16 else np.uint32 if n <= 32 else np.uint64
 
 
 class Shard:
@@ -90,45 +153,83 @@ class Shard:
         self.visited, self.frontier, self.frontier_ids = visited, frontier, frontier_ids
         return len(self.visited)
 
-    def expand(self, batch: int, progress: Callable[[int, int], None] | None = None) -> Level:
-        """Expand the whole frontier, ``batch`` states at a time (``progress(done, frontier)`` after each)."""
-        cols: dict[str, list[np.ndarray]] = {name: [] for name in COLUMNS}
-        for start in range(0, len(self.frontier), batch):
-            ids = self.frontier_ids[start : start + batch]
-            ex = expand_keys(self.system, self.engine, self.codec, self.frontier[start : start + batch])
-            src = ids[ex.src]
+    def _batches(
+        self, keys: np.ndarray, ids: np.ndarray, batch: int, progress: Callable[[int, int], None] | None = None
+    ) -> Iterator[Transitions]:
+        """The transitions of ``keys`` (ids ``ids``), ``batch`` states at a time, each batch compacted
+        (int32 ids and actions, uint8 flags, keys of followed transitions only) and in (source, action)
+        order."""
+        for start in range(0, len(keys), batch):
+            part = keys[start : start + batch]
+            got = ids[start : start + batch]
+            ex = expand_keys(self.system, self.engine, self.codec, np.asarray(part))
+            src = got[ex.src]
             flags = ex.flags
             if self.lemmas:
-                flags = flags | self._lemma_flags(self.frontier[start : start + batch], ex.src, ex.action)
+                flags = flags | self._lemma_flags(np.asarray(part), ex.src, ex.action)
             flags = flags.astype(np.uint8)
             follow = followed(ex.fits, flags, self.after_violation)
-            # Compact each batch at once (int32 ids and actions, uint8 flags, keys of followed
-            # transitions only), so a level's peak is its compact columns, not the engine's.
-            cols["ids"].append(ids)
-            cols["enabled"].append(ex.enabled.astype(np.int32))
-            cols["goal"].append(ex.goal)
-            cols["src"].append(src.astype(np.int32) if len(src) and src[-1] < 2**31 - 1 else src)
-            cols["action"].append(ex.action.astype(np.int32))
-            cols["key"].append(ex.key[follow])
-            cols["flags"].append(flags)
-            cols["fits"].append(ex.fits)
-            cols["exact"].append(ex.exact)
+            col = {
+                "src": src.astype(np.int32) if len(src) and src[-1] < 2**31 - 1 else src,
+                "action": ex.action.astype(np.int32),
+                "key": ex.key[follow],
+                "flags": flags,
+                "fits": ex.fits,
+                "exact": ex.exact,
+            }
+            enabled, goal = ex.enabled.astype(enabled_dtype(self.codec.n)), ex.goal
             del ex
+            _in_action_order(col, self.after_violation)
+            yield Transitions(np.asarray(got), enabled, goal, **col)
             if progress:
-                progress(min(start + batch, len(self.frontier)), len(self.frontier))
-        dtypes: dict[str, Any] = {"ids": np.int64, "enabled": np.int32, "goal": bool, "src": np.int32}
-        dtypes["action"] = np.int32
-        dtypes |= {"key": self.codec.dtype, "flags": np.uint8, "fits": bool, "exact": bool}
-        col = {name: _concat(parts, dtypes[name]) for name, parts in cols.items()}
-        del cols
-        _in_action_order(col, self.after_violation)
-        follow = followed(col["fits"], col["flags"], self.after_violation)
-        # Transitions are generated in (source id, action) order, so a key's first occurrence is its least.
-        ck, first = np.unique(col["key"], return_index=True)
-        cs, ca = col["src"][follow][first], col["action"][follow][first]
+                progress(min(start + batch, len(keys)), len(keys))
+
+    def expand(self, batch: int, progress: Callable[[int, int], None] | None = None) -> Level:
+        """Expand the whole frontier, ``batch`` states at a time (``progress(done, frontier)`` after each):
+        per state its enabled robots and goal, the transitions folded into a summary as they come, and
+        the followed successors routed to their owners."""
+        ids, enabled, goal, summaries = [], [], [], []
+        ck, cs, ca = np.zeros(0, dtype=self.codec.dtype), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int32)
+        parts: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
+        pending = 0
+        for tr in self._batches(self.frontier, self.frontier_ids, batch, progress):
+            ids.append(tr.ids.astype(np.int32) if len(tr.ids) and tr.ids[-1] < 2**31 - 1 else tr.ids)
+            enabled.append(tr.enabled)
+            goal.append(tr.goal)
+            summaries.append(summarise(tr.src, tr.action, tr.flags, tr.fits, tr.exact, self.after_violation))
+            follow = followed(tr.fits, tr.flags, self.after_violation)
+            # A key's first occurrence is its least (source, action): batches ascend, so do their firsts.
+            bk, first = keyset.unique_first(tr.key)
+            bs = tr.src[follow][first]
+            parts.append((bk, bs.astype(np.int32) if len(bs) and bs.max() < 2**31 - 1 else bs, tr.action[follow][first]))
+            pending += len(bk)
+            del tr
+            if pending > _CONSOLIDATE:  # bound the level's candidates: fold them into one sorted set
+                ck, cs, ca = _first_of(ck, cs, ca, parts, self.codec.dtype)
+                parts, pending = [], 0
+        ck, cs, ca = _first_of(ck, cs, ca, parts, self.codec.dtype)
+        del parts
         owner = owners(ck, self.count)
-        routed = [(ck[owner == o], cs[owner == o].astype(np.int64), ca[owner == o]) for o in range(self.count)]
-        return Level(**col, routed=routed)
+        routed = [(ck[owner == o], cs[owner == o], ca[owner == o]) for o in range(self.count)]
+        if self.count == 1:
+            routed = [(ck, cs, ca)]
+        return Level(
+            _concat(ids, np.int64),
+            _concat(enabled, enabled_dtype(self.codec.n)),
+            _concat(goal, bool),
+            fold_summaries(summaries),
+            routed,
+        )
+
+    def transitions(self, keys: np.ndarray, ids: np.ndarray, batch: int = 50_000) -> Transitions:
+        """Every transition of the states ``keys`` (ids ``ids``, ascending), recomputed (the search keeps
+        summaries only; the fair-cycle search and :attr:`.search.Exploration.edge_src` ask again)."""
+        parts = list(self._batches(keys, ids, batch))
+        names = ("ids", "enabled", "goal", "src", "action", "key", "flags", "fits", "exact")
+        dtypes: dict[str, Any] = {"ids": np.int64, "enabled": enabled_dtype(self.codec.n), "goal": bool}
+        dtypes |= {"src": np.int32, "action": np.int32, "key": self.codec.dtype, "flags": np.uint8}
+        dtypes |= {"fits": bool, "exact": bool}
+        return Transitions(**{f: _concat([getattr(p, f) for p in parts], dtypes[f]) for f in names})
 
     def _lemma_flags(self, keys: np.ndarray, src: np.ndarray, action: np.ndarray) -> np.ndarray:
         """The registered lemmas' bits of a batch's transitions: the engine's own successors, robot by
@@ -143,9 +244,12 @@ class Shard:
     def merge(self, parts: list[tuple[np.ndarray, np.ndarray, np.ndarray]]) -> tuple[np.ndarray, ...]:
         """De-duplicate the candidates routed here: the new keys (sorted), each with its least
         ``(source id, action)``; they join the visited set. The frontier waits for :meth:`assign`."""
-        ck = _concat([p[0] for p in parts], self.codec.dtype)
-        cs = _concat([p[1] for p in parts], np.int64)
-        ca = _concat([p[2] for p in parts], np.int64)
+        if len(parts) == 1:
+            ck, cs, ca = parts[0]
+        else:
+            ck = _concat([p[0] for p in parts], self.codec.dtype)
+            cs = _concat([p[1] for p in parts], np.int64)
+            ca = _concat([p[2] for p in parts], np.int64)
         if len(parts) > 1:
             order = np.lexsort((ca, cs, ck))
             ck, cs, ca = ck[order], cs[order], ca[order]
@@ -153,11 +257,10 @@ class Shard:
             first[1:] = ck[1:] != ck[:-1]
             ck, cs, ca = ck[first], cs[first], ca[first]
         if len(self.visited) and len(ck):
-            pos = np.minimum(np.searchsorted(self.visited, ck), len(self.visited) - 1)
+            pos = np.minimum(keyset.searchsorted(self.visited, ck), len(self.visited) - 1)
             new = self.visited[pos] != ck
             ck, cs, ca = ck[new], cs[new], ca[new]
-        merged = np.concatenate([self.visited, ck])
-        self.visited = np.sort(merged, kind="stable" if merged.dtype == np.int64 else None)  # two sorted runs
+        self.visited = _merged(self.visited, ck)
         self.frontier = ck
         return ck, cs, ca
 
@@ -169,8 +272,8 @@ class Shard:
         return int(self.visited.nbytes + self.frontier.nbytes + self.frontier_ids.nbytes)
 
 
-COLUMNS = ("ids", "enabled", "goal", "src", "action", "key", "flags", "fits", "exact")
-"""A :class:`Level`'s columns, in order (the checkpoint files hold the same)."""
+COLUMNS = ("enabled", "goal", "summary")
+"""A :class:`Level`'s columns kept by the search, in order (the checkpoint files hold the same)."""
 
 
 def _in_action_order(col: dict[str, np.ndarray], after_violation: str) -> None:
@@ -189,6 +292,40 @@ def _in_action_order(col: dict[str, np.ndarray], after_violation: str) -> None:
     col["key"] = full[order][follow[order]]
 
 
+_CONSOLIDATE = 1 << 23
+"""Candidate successors a level gathers before folding them into its sorted set (bounds the peak)."""
+
+
+def _first_of(
+    ck: np.ndarray, cs: np.ndarray, ca: np.ndarray, parts: list[tuple[np.ndarray, ...]], dtype: object
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The sorted set of ``ck`` and the keys of ``parts`` (later ones after), each key once with its
+    first ``(source, action)`` in that order (which is its least: sources ascend)."""
+    if not parts:
+        return ck, cs, ca
+    if len(parts) == 1 and not len(ck):
+        return parts[0]  # type: ignore[return-value]
+    keys = np.concatenate([ck, *[p[0] for p in parts]])
+    src = np.concatenate([cs.astype(np.int64, copy=False), *[p[1].astype(np.int64, copy=False) for p in parts]])
+    act = np.concatenate([ca, *[p[2] for p in parts]])
+    keys, first = keyset.unique_first(keys)  # stable: the first occurrence of each key
+    src = src[first]
+    return keys, src.astype(np.int32) if len(src) and src.max() < 2**31 - 1 else src, act[first]
+
+
+def _merged(visited: np.ndarray, new: np.ndarray) -> np.ndarray:
+    """Two sorted arrays of distinct keys as one, without sorting again (peak: the two and the result)."""
+    if not len(new):
+        return visited
+    at = keyset.searchsorted(visited, new) + np.arange(len(new))
+    out = np.empty(len(visited) + len(new), dtype=visited.dtype)
+    rest = np.ones(len(out), dtype=bool)
+    rest[at] = False
+    out[at] = new
+    out[rest] = visited
+    return out
+
+
 def followed(fits: np.ndarray, flags: np.ndarray, after_violation: str) -> np.ndarray:
     """The transitions the search follows: inside the bound and, unless ``after_violation`` is
     ``"continue"``, violating none of the paper's step lemmas (a registered lemma never prunes:
@@ -200,4 +337,4 @@ def _concat(parts: list[np.ndarray], dtype: object) -> np.ndarray:
     return np.concatenate(parts) if parts else np.zeros(0, dtype=dtype)  # type: ignore[call-overload]
 
 
-__all__ = ["COLUMNS", "Level", "Shard", "followed", "owners"]
+__all__ = ["COLUMNS", "Level", "Shard", "Transitions", "enabled_dtype", "fold_summaries", "followed", "owners", "summarise"]

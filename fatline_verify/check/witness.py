@@ -55,10 +55,9 @@ def _finish(ex: Exploration, run: Run, lemma: Lemma) -> dict[str, Any]:
     return doc
 
 
-def transition_witness(ex: Exploration, edge: int, lemma: Lemma) -> dict[str, Any]:
-    """A shortest path to the source of transition ``edge`` and the violating step itself."""
-    src = int(ex.edge_src[edge])
-    steps = [*ex.path(src), (src, int(ex.edge_action[edge]))]
+def transition_witness(ex: Exploration, src: int, action: int, lemma: Lemma) -> dict[str, Any]:
+    """A shortest path to the state ``src`` and the violating step ``action`` from it."""
+    steps = [*ex.path(src), (src, action)]
     initial, played = _follow(ex, src, steps)
     if isinstance(lemma, Lemma):
         outcome = Outcome.VIOLATION

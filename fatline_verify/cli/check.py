@@ -139,7 +139,7 @@ def register(sub: Any) -> None:
         "--engine",
         choices=list(ENGINES),
         default=None,
-        help="exploration engine (default: compiled for the round schedulers, fast for async)",
+        help="exploration engine (default: compiled)",
     )
     p.add_argument(
         "--workers",

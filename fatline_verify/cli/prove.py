@@ -30,7 +30,14 @@ from .common import (
 
 MAX_SLOTS = 8
 MAX_JOBS = 256
-LEMMA_CHOICES = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
+LEMMA_CHOICES = (
+    Lemma.NO_COLLISION,
+    Lemma.CONNECTIVITY,
+    Lemma.RMA_FIXED,
+    Lemma.APPROACH,
+    Lemma.PROGRESS,
+    Lemma.TERMINATION,
+)
 """The lemmas ``--lemma`` offers: :data:`fatline_verify.prove.prover.LEMMAS`, named here without
 importing z3 when the parser is built (a test keeps the two equal)."""
 DEFAULT_SLOTS, DEFAULT_TIMEOUT = 3, 60.0
@@ -38,6 +45,8 @@ DEFAULT_SLOTS, DEFAULT_TIMEOUT = 3, 60.0
 without importing z3 (a test keeps them equal)."""
 ALL = "all"
 """``--lemma all``: every lemma the prover decides."""
+LIVENESS = "liveness"
+"""``--lemma liveness``: the liveness obligations (progress and termination)."""
 
 
 def cmd_prove(args: argparse.Namespace) -> int:
@@ -54,7 +63,10 @@ def cmd_prove(args: argparse.Namespace) -> int:
 
     model = model_arg(args.model)
     given = [(name, initial_radii(load_trace(name))) for name in args.known]  # a bad file: exit 2, before any work
-    lemmas = LEMMAS if args.lemma == ALL else (Lemma(args.lemma),)
+    if args.lemma == LIVENESS:
+        lemmas: tuple[Lemma, ...] = (Lemma.PROGRESS, Lemma.TERMINATION)
+    else:
+        lemmas = LEMMAS if args.lemma == ALL else (Lemma(args.lemma),)
     tasks = tasks_for(
         model, lemmas, two_movers=args.two_movers
     )  # refuses a scheduler the obligations do not encode, before any work
@@ -97,6 +109,7 @@ def cmd_prove(args: argparse.Namespace) -> int:
                 earlier=store.rows,
                 given=given,
                 on_start=begun,
+                corpus=not args.no_corpus,
             )
         except KeyboardInterrupt:
             interrupted = True
@@ -130,7 +143,7 @@ def running_note(running: dict[str, float], shown: int = 2) -> str:
 def register(sub: Any) -> None:
     p = add_command(sub, "prove", "prove (for any swarm size) or refute each lemma per decision case with z3")
     add_model_argument(p)
-    p.add_argument("--lemma", choices=[*(lemma.value for lemma in LEMMA_CHOICES), ALL], default=ALL)
+    p.add_argument("--lemma", choices=[*(lemma.value for lemma in LEMMA_CHOICES), LIVENESS, ALL], default=ALL)
     p.add_argument(
         "--timeout",
         type=seconds("timeout"),
@@ -203,6 +216,12 @@ def register(sub: Any) -> None:
         "--q",
         type=integer("q", 1, 4),
         help="with --with: lattice points per radius of those obligations (default: the model's q)",
+    )
+    p.add_argument(
+        "--no-corpus",
+        action="store_true",
+        help="leave out the counterexample corpus shipped with the tool (by default replayed before any search; "
+        "each row says whether the search, the corpus, an earlier run or --known decided it)",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="no progress")
     p.add_argument(

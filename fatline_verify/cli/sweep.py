@@ -3,13 +3,17 @@
 from __future__ import annotations
 
 import argparse
-import sys
+import math
+import re
+import time
 from typing import Any
 
 from ..errors import InvalidInput
 from ..lemmas.properties import CHECKED, Lemma
 from ..model.config import parse_robots, parse_window
 from ..outputs import child, claim_dir
+from ..progress import Progress
+from ..resources import default_max_memory, format_size, parse_size
 from ..schedulers.base import ENGINES
 from .check import MAX_Q
 from .common import (
@@ -28,13 +32,17 @@ from .common import (
 
 DEFAULT_ROBOTS = (2, 3)
 DEFAULT_WINDOW = (7, 7)
+DEFAULT_MAX_TIME = "10m"
+FIRST = 0.5
+"""Seconds before the first progress line off a terminal (the plan line comes at once)."""
+EVERY = 10.0
 
 
 def cmd_sweep(args: argparse.Namespace) -> int:
     from ..check.checker import CheckPlan
     from ..check.workers import require_dask
     from ..locks import holding
-    from ..sweep.run import Sweep, SweepBounds
+    from ..sweep.run import CHECK_SHARE, WORK, Sweep, SweepBounds
     from ..sweep.space import Space, parse_vary
 
     model = model_arg(args.model)
@@ -45,7 +53,10 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     robots = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else DEFAULT_ROBOTS
     window = parse_window(args.window, error=InvalidInput) if args.window is not None else DEFAULT_WINDOW
     bound = parse_window(args.bound, error=InvalidInput, name="bound") if args.bound is not None else None
-    CheckPlan.of(model, robots, window, args.max_states, args.engine, bound=bound)  # refused now, not per check
+    max_memory = parse_size(args.max_memory) if args.max_memory is not None else default_max_memory()
+    max_time = parse_duration(args.max_time)
+    # refused now, not per check
+    CheckPlan.of(model, robots, window, args.max_states, args.engine, bound=bound, max_memory=max_memory // CHECK_SHARE)
     check_workers(args.workers, args.cluster)
     if args.cluster is not None or args.workers > 1:
         require_dask(f"workers={args.workers}" if args.cluster is None else f"cluster={args.cluster!r}")
@@ -55,37 +66,58 @@ def cmd_sweep(args: argparse.Namespace) -> int:
         SweepBounds(robots, window, args.engine, args.max_states, bound),
         child(root, model.name),
         lemmas,
+        max_memory,
+        0 if max_time is None else WORK,  # a run with a time limit keeps each step to minutes
     )
     with holding(sweep.out, name="out"):  # one run at a time per sweep: a second is refused, before any work
-        return _run(args, model.name, sweep)
+        return _run(args, model.name, sweep, max_time)
 
 
-def _run(args: argparse.Namespace, name: str, sweep: Any) -> int:
-    """Resume, run, save and report ``sweep`` (its directory held)."""
+def _run(args: argparse.Namespace, name: str, sweep: Any, max_time: float | None) -> int:
+    """Resume, run, save and report ``sweep`` (its directory held): progress from the first second,
+    every step saved as it finishes, a stop after ``max_time`` seconds (between two steps)."""
     from ..sweep.page import claim_pages, page_files, write_pages
-    from ..sweep.run import INCONCLUSIVE, sweep_lines
+    from ..sweep.run import INCONCLUSIVE, Sweep, sweep_lines
 
+    started = time.monotonic()
+    deadline = None if max_time is None else started + max_time
+    interrupted = False
     resumed = sweep.resume()  # refuses another sweep's directory, or files changed since, before any work
     claim_pages(sweep.out)
+    with Progress(enabled=not args.quiet, unit="judgements", first=FIRST, every=EVERY) as bar:
+        bar.say(_plan_line(sweep, max_time))
+        if resumed:
+            bar.say(
+                f"resuming: {len(sweep.checks)} checks done, {sweep.open_count():,} judgements open"
+                + (f", a check under way ({len(sweep.absorbed)} lemmas closed from it)" if sweep.pending else "")
+            )
+        opened = sweep.open_count()
+        bar.stage("judging", total=opened or None, live=lambda: str(sweep.doing))
 
-    def say(line: str) -> None:
-        if not args.quiet:
-            print(line, file=sys.stderr, flush=True)
+        def say(line: str) -> None:
+            bar.update(opened - sweep.open_count())
+            bar.say(line)
 
-    if resumed:
-        say(f"resuming: {len(sweep.checks)} checks done, {sweep.open_count():,} combinations open")
-    interrupted = False
-    try:
-        if args.max_checks != 0:
-            sweep.run(args.max_checks, args.workers, args.cluster, say)
-    except KeyboardInterrupt:
-        interrupted = True
+        try:
+            if args.max_checks != 0:
+                sweep.run(args.max_checks, args.workers, args.cluster, say, deadline)
+        except KeyboardInterrupt:
+            interrupted = True
+    if interrupted:  # the step under way is dropped: what is reported and kept is what was saved
+        sweep = Sweep(sweep.space, sweep.bounds, sweep.out, sweep.lemmas, sweep.max_memory, sweep.work)
+        sweep.resume()
     lines = [*sweep_lines(sweep), f"report page: {page_files(sweep.out)[0]}"]
+    timed_out = deadline is not None and time.monotonic() >= deadline and sweep.open_count() > 0
     if interrupted:
-        lines.append(f"INTERRUPTED: {len(sweep.checks)} checks finished and saved in {sweep.json_path}; "
+        under_way = f" and {len(sweep.absorbed)} lemmas closed from the next" if sweep.absorbed else ""
+        lines.append(f"INTERRUPTED: {len(sweep.checks)} checks{under_way} finished and saved in {sweep.json_path}; "
                      "the same command resumes")  # fmt: skip
+    elif timed_out:
+        lines.append(f"stopped after --max-time {args.max_time}: {len(sweep.checks)} checks saved in "
+                     f"{sweep.json_path}; the same command resumes")  # fmt: skip
     emit(lines)  # the verdicts before any file: a full disk does not hide them
-    sweep.save()
+    if not interrupted:
+        sweep.save()
     write_pages(sweep, _command(args, name))
     if interrupted:
         return EXIT_INTERRUPTED
@@ -95,6 +127,39 @@ def _run(args: argparse.Namespace, name: str, sweep: Any) -> int:
         return EXIT_FOUND
     # nothing refuted: INCONCLUSIVE anywhere is exit 3, as for check
     return EXIT_INCONCLUSIVE if any((s == INCONCLUSIVE).any() for s in sweep.status.values()) else EXIT_OK
+
+
+def _plan_line(sweep: Any, max_time: float | None) -> str:
+    """The first line: what is swept, what a check costs, when the run stops."""
+    b = sweep.bounds
+    lo, hi = b.robots
+    robots = str(lo) if lo == hi else f"{lo}..{hi}"
+    stop = "no time limit" if max_time is None else f"stops after {_duration_text(max_time)} (--max-time)"
+    return (
+        f"sweep of {sweep.space.base.name}: {len(sweep.space.names)} options varied, {sweep.judgements():,} "
+        f"judgements ({len(sweep.lemmas)} lemmas); each check explores robots {robots} in "
+        f"{b.window[0]}x{b.window[1]}; memory up to {format_size(sweep.max_memory)}; {stop}; every step saved "
+        f"in {sweep.out}"
+    )
+
+
+def parse_duration(text: str) -> float | None:
+    """``--max-time``: ``90``, ``90s``, ``10m``, ``1.5h`` -> seconds; ``none``: no limit."""
+    if text.strip().lower() == "none":
+        return None
+    m = re.fullmatch(r"\s*(\d+(?:\.\d+)?)\s*([smh]?)\s*", text.lower())
+    value = float(m.group(1)) * {"": 1, "s": 1, "m": 60, "h": 3600}[m.group(2)] if m else math.nan
+    if not (math.isfinite(value) and 0 < value <= 7 * 86_400):
+        raise InvalidInput(f"max-time={text!r}: expected a duration such as 90s, 10m or 2h (at most a week), or none")
+    return value
+
+
+def _duration_text(seconds: float) -> str:
+    if seconds >= 3600 and seconds % 3600 == 0:
+        return f"{seconds / 3600:g} h"
+    if seconds >= 60 and seconds % 60 == 0:
+        return f"{seconds / 60:g} min"
+    return f"{seconds:g} s"
 
 
 def _command(args: argparse.Namespace, name: str) -> str:
@@ -146,8 +211,25 @@ def register(sub: Any) -> None:
         "--max-checks",
         type=integer("max-checks", 0),
         default=None,
-        help="stop after this many checks (default: until every combination is judged); rerun to go on; "
-        "0: no check, only the report page from what is saved",
+        help="stop after this many checks (default: until every combination is judged or --max-time); rerun "
+        "to go on; 0: no check, only the report page from what is saved. A check is not cheap: at the default "
+        "bounds (robots 2..3, window 7x7) its searches take about 20 s, and closing what it decides over the "
+        "other readings (replaying its counterexamples, spreading what holds) from seconds to minutes",
+    )
+    p.add_argument(
+        "--max-time",
+        default=DEFAULT_MAX_TIME,
+        help=f"stop after this long, between two steps (a step is one lemma closed from one check, saved as it "
+        f"finishes), e.g. 90s, 30m, 2h, or none (default {DEFAULT_MAX_TIME}: a first answer, every lemma's "
+        "counts so far); the same command resumes. With a limit, each closure is bounded too (20,000 replays: "
+        "the readings it has not shown alike stay open for later checks); with none, closures run to the end "
+        "and close far more per check (the shipped sweeps)",
+    )
+    p.add_argument(
+        "--max-memory",
+        help="memory the run may use, e.g. 4G (default: half of this machine's): a check's search gets half, "
+        "the remembered replays and a closure's sets of readings a quarter each (a closure that would need "
+        "more leaves those readings open for later checks)",
     )
     p.add_argument(
         "--workers", type=integer("workers", 1, 1024), default=1, help="checks at once, on a local Dask cluster"

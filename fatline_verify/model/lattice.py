@@ -68,6 +68,72 @@ class KeyCodec:
         return np.stack([codes // self.h, codes % self.h], axis=-1)
 
 
+def rank_table(n: int, cells: int) -> np.ndarray:
+    """``cum[i, x]``: how many sorted code tuples ``c`` of ``n`` codes in ``[0, cells)`` (repetition
+    allowed) have, position ``i`` on and the positions before it fixed, ``c[i] + i`` below ``x`` (so
+    ``d = c + (0, 1, ..., n - 1)`` is a strictly increasing tuple in ``[0, cells + n - 1)`` and its
+    lexicographic rank is ``sum(cum[i, d[i]] - cum[i, d[i - 1] + 1])``, ``d[-1] = -1``). Exact integers
+    (Python's, then int64: :class:`RankedCodec` checks the total fits)."""
+    from math import comb
+
+    m = cells + n - 1
+    cum = np.zeros((n, m + 1), dtype=np.int64)
+    for i in range(n):
+        total = 0
+        for x in range(m + 1):
+            cum[i, x] = total
+            if x < m:
+                total += comb(m - 1 - x, n - 1 - i)
+    return cum
+
+
+class RankedCodec(KeyCodec):
+    """Canonical states whose packed codes pass 63 bits (8 robots in 20x20: 72), as the lexicographic
+    rank of their sorted cell codes among all sorted code tuples: the same order as packed keys would
+    have (so state ids, parents and witnesses are the same as with :class:`KeyCodec` wherever both
+    apply), in at most 63 bits (8 robots in 20x20: 54)."""
+
+    def __init__(self, n: int, window: tuple[int, int]) -> None:
+        from math import comb
+
+        self.n, (self.w, self.h) = n, window
+        self.bits = max(1, int(self.w * self.h - 1).bit_length())
+        cells = self.w * self.h
+        if comb(cells + n - 1, n) >= 2**63:
+            raise ValueError(f"window={self.w}x{self.h} with {n} robots does not rank into 63 bits")
+        self.cum = rank_table(n, cells)
+
+    def encode(self, canon: np.ndarray) -> np.ndarray:
+        codes = np.sort(canon[..., 0].astype(np.int64) * self.h + canon[..., 1], axis=1)
+        key = np.zeros(len(canon), dtype=np.int64)
+        prev = np.zeros(len(canon), dtype=np.int64)  # d[i - 1] + 1
+        for i in range(self.n):
+            d = codes[:, i] + i
+            key += self.cum[i, d] - self.cum[i, prev]
+            prev = d + 1
+        return key
+
+    def decode(self, keys: np.ndarray) -> np.ndarray:
+        rest = np.asarray(keys, dtype=np.int64).copy()
+        codes = np.empty((len(rest), self.n), dtype=np.int64)
+        prev = np.zeros(len(rest), dtype=np.int64)
+        for i in range(self.n):
+            target = rest + self.cum[i, prev]
+            d = np.searchsorted(self.cum[i], target, side="right") - 1
+            rest -= self.cum[i, d] - self.cum[i, prev]
+            codes[:, i] = d - i
+            prev = d + 1
+        return np.stack([codes // self.h, codes % self.h], axis=-1)
+
+
+def key_codec(n: int, window: tuple[int, int]) -> KeyCodec:
+    """The packed codec where ``n`` codes fit 63 bits, else the ranked one (ValueError past that)."""
+    try:
+        return KeyCodec(n, window)
+    except ValueError:
+        return RankedCodec(n, window)
+
+
 class KeyTable:
     """A growing table of small integer rows keyed by int64 or fixed-width byte keys, looked up with
     ``searchsorted``; rows for new keys are computed on demand. Both fast engines cache decisions

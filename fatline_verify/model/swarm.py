@@ -7,8 +7,7 @@ The robots do not know these coordinates: only the engine does, to apply the sch
 from __future__ import annotations
 
 from collections.abc import Sequence
-
-import networkx as nx
+from typing import TYPE_CHECKING
 
 from ..errors import InvalidInput
 from .config import Model
@@ -16,12 +15,17 @@ from .geometry import collinear, dist2, width_at_most
 from .numbers import Point, show, show_point
 from .options import Goal
 
+if TYPE_CHECKING:
+    import networkx as nx
+
 State = tuple[Point, ...]
 
 
 def visibility_graph(state: Sequence[Point], model: Model) -> nx.Graph:
     """ "There exists an edge ... between the robots r_i and r_j if and only if they can see each
     other." Visibility is symmetric under every reading (it depends on the distance only)."""
+    import networkx as nx  # imported when used: a check's start-up does not pay for it
+
     graph = nx.Graph()
     graph.add_nodes_from(range(len(state)))
     for i in range(len(state)):
@@ -31,9 +35,29 @@ def visibility_graph(state: Sequence[Point], model: Model) -> nx.Graph:
     return graph
 
 
+def components(state: Sequence[Point], model: Model) -> list[tuple[int, ...]]:
+    """The connected components of the visibility graph (robot indices, each sorted; by least index)."""
+    seen: set[int] = set()
+    out = []
+    for start in range(len(state)):
+        if start in seen:
+            continue
+        seen.add(start)
+        todo, comp = [start], [start]
+        while todo:
+            i = todo.pop()
+            for j in range(len(state)):
+                if j not in seen and model.sees(dist2(state[i], state[j])):
+                    seen.add(j)
+                    comp.append(j)
+                    todo.append(j)
+        out.append(tuple(sorted(comp)))
+    return out
+
+
 def is_connected(state: Sequence[Point], model: Model) -> bool:
     """Whether the visibility graph is connected (a single robot is)."""
-    return len(state) <= 1 or nx.is_connected(visibility_graph(state, model))
+    return len(state) <= 1 or len(components(state, model)) == 1
 
 
 def is_goal(state: Sequence[Point], model: Model) -> bool:

@@ -40,6 +40,7 @@ from .smt.claims import (
     Spec,
 )
 from .smt.legs import LegSpec
+from .smt.liveness import LiveSpec
 from .tasks import (
     DEFAULT_SLOTS,
     DEFAULT_TIMEOUT,
@@ -174,6 +175,7 @@ def prove(
     earlier: Mapping[str, dict[str, Any]] | None = None,
     given: Sequence[Given] = (),
     on_start: Callable[[str], None] | None = None,
+    corpus: bool = True,
 ) -> list[ProofResult]:
     """Every obligation of ``lemmas`` (or exactly ``tasks``) for ``model``; ``.smt2`` files under ``out``.
 
@@ -185,25 +187,33 @@ def prove(
     ``earlier``: an earlier run's results rows by obligation key, whose replayed configurations (the
     claims without a trace: ``closer``, ``seen``, ``x-nondecreasing``) are replayed first likewise;
     ``given``: configurations handed in (``--known``), replayed against every per-case obligation;
-    ``on_start(key)``: an obligation's process has started (``progress(key)``: it has finished).
+    ``on_start(key)``: an obligation's process has started (``progress(key)``: it has finished);
+    ``corpus``: the shipped counterexample corpus (:mod:`fatline_verify.prove.corpus`) is replayed
+    first of all (``fatline prove --no-corpus``: not at all).
     """
     tasks = tasks_for(model, lemmas) if tasks is None else tasks
     if not tasks:
         return []
     check_encoded(model)
+    from .basis import decided
     from .legs import prove_leg
+    from .live import prove_live
 
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
     calls: list[tuple[Callable[..., ProofResult], tuple[Any, ...], dict[str, Any]]] = []
     for task in tasks:
         if isinstance(task, LegSpec):
-            calls.append((prove_leg, (model, task), {"timeout": timeout, "out": out}))
+            calls.append((decided, (prove_leg, model, task), {"timeout": timeout, "out": out}))
+        elif isinstance(task, LiveSpec):
+            calls.append((prove_live, (model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, Spec):
             note = PAPER_PART_NOTE if model.options.repaired else ""
             written = traces if traces is not None else out / "traces" if out else None
             known = _known_all(model, task.key, written, out, earlier)
             kwargs = {"timeout": timeout, "out": out, "note": note, "known": known, "given": tuple(given)}
-            calls.append((prove_spec, (paper_part(model), task), kwargs))
+            if corpus:
+                kwargs["corpus"] = corpus_known(paper_part(model), task.key)
+            calls.append((decided, (prove_spec, paper_part(model), task), kwargs))
         else:
             calls.append((prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out}))
     results: list[ProofResult | None] = [None] * len(tasks)
@@ -246,7 +256,7 @@ def overrun_result(task: Task, seconds: float, timeout: float, out: Path | None)
     path = (out / lemma / name).as_posix() if out is not None else ""
     if isinstance(task, GlobalTask):
         return ProofResult(task.lemma, task.form, "any", Verdict.INCONCLUSIVE, 0, False, seconds, reason, path)
-    if isinstance(task, LegSpec):
+    if isinstance(task, LegSpec | LiveSpec):
         rule, case, other = "any", task.name, task.other
     else:
         rule, case, other = task.mine[0].rule.value, task.name, task.other_name
@@ -286,6 +296,22 @@ def _known_all(
     return found
 
 
+def corpus_known(model: Model, key: str) -> list[Known]:
+    """The shipped corpus's candidates for the obligation ``key`` (:func:`fatline_verify.prove.corpus.known_for`),
+    then its mirror obligation's (:func:`mirror_key`), reflected in the x-axis, as for an earlier run's."""
+    from .corpus import known_for
+
+    found = known_for(model, key)
+    mirror = mirror_key(key)
+    if mirror is not None:
+        _, case = mirror.split("/", 1)
+        found += [
+            (f"the mirror image (y to -y) of {where} for {case}", reflect(doc))
+            for where, doc in known_for(model, mirror)
+        ]
+    return found
+
+
 _MIRROR = {"scenario-2": "scenario-3", "scenario-3": "scenario-2", "up": "down", "down": "up"}
 
 
@@ -312,7 +338,7 @@ def reflect(doc: dict[str, Any]) -> dict[str, Any]:
         for point in doc["configuration"]:
             x, _, y = str(point).partition(",")
             flipped.append(f"{x},{neg(y)}" if y else str(point))
-        return {"configuration": flipped}
+        return {"configuration": flipped, **({"focus": doc["focus"]} if "focus" in doc else {})}
     out = dict(doc)
     if isinstance(doc.get("initial"), list):
         out["initial"] = [[p[0], neg(p[1])] if isinstance(p, list) and len(p) == 2 else p for p in doc["initial"]]
@@ -380,7 +406,7 @@ def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
     return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
 
 
-ENCODING_VERSION = 10
+ENCODING_VERSION = 11
 """Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
 role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
 initial search over the reals after a non-initial solution, fsync replays activate every robot;
@@ -399,10 +425,17 @@ a finer grid: most of the time went to Python, not z3), its budget counted at 3 
 rate (was 4), a polish repeated at most 3 times per set of free unknowns, and a check's clock limit
 0.1 s above 1.5 times its budget (a sliver of budget stopped by the clock was reported as load),
 and an earlier run's counterexample of a claim without a trace (its row's configuration) replayed
-first, as traces were. Not bumped for the small swarms enumerated after the first round
+first, as traces were; 11: every PROVED row carries its basis (vacuous, immediate, substantive:
+:mod:`fatline_verify.prove.basis`), a row that cannot fire is reported vacuous however its unsat was
+reached, rma-fixed has the ``on-rma`` form (Lemma 3's "a robot on the RMA never leaves it"), and a
+repaired model has obligations for the repairs' own destinations (``repair-align``, ``repair-approach``,
+``repair-contract``). Not bumped for the small swarms enumerated after the first round
 (:mod:`fatline_verify.prove.small`): they find nothing where a row is PROVED (a test runs every
 PROVED row of ``proofs/`` through them), and a VIOLATED row replays its own counterexample first, so
-only an INCONCLUSIVE row can change, which ``--redo-inconclusive`` re-runs."""
+only an INCONCLUSIVE row can change, which ``--redo-inconclusive`` re-runs. Nor for the shipped
+counterexample corpus (:mod:`fatline_verify.prove.corpus`) and the rows' ``decided_by``: the corpus
+only adds candidates replayed first, each believed only if it replays, none of them beside a PROVED
+row (``tests/test_prove_corpus.py``), so again only an INCONCLUSIVE row can change."""
 
 
 __all__ = [

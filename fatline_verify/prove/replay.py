@@ -5,7 +5,7 @@ any search (:func:`replay_known`). Nothing is reported VIOLATED without this rep
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Any
 
@@ -24,6 +24,7 @@ from ..trace.simulate import Outcome, Run, outcome_after
 from ..trace.traces import initial_radii, replayed_document
 from .smt.claims import (
     CLOSER,
+    ON_RMA,
     ONE_MOVER,
     SEEN,
     TWO_MOVERS,
@@ -67,8 +68,14 @@ def replay(model: Model, spec: Spec, positions: dict[str, tuple[Fraction, Fracti
     problems = initial_problems(state, model)
     initial = not problems
     form = spec.form
-    if form in (SEEN, X_NONDECREASING, CLOSER):
-        what = _claim_fails(model, spec, state, decisions[0], j)
+    if form in (SEEN, ON_RMA, X_NONDECREASING, CLOSER):
+        dec = decisions[0]
+        if spec.repair:
+            moved = _repair_destination(model, spec.repair, state, dec)
+            if isinstance(moved, str):
+                return moved
+            dec = replace(dec, destination=moved)
+        what = _claim_fails(model, spec, state, dec, j)
         if what is None:
             return "the claim holds on the replayed configuration"
         return Replayed(state, j, initial, problems, None, what)
@@ -102,6 +109,21 @@ def replay(model: Model, spec: Spec, positions: dict[str, tuple[Fraction, Fracti
     return Replayed(state, j, initial, problems, doc, what)
 
 
+def _repair_destination(model: Model, repair: str, state: Sequence[Point], dec: Decision) -> Point | str:
+    """Where the repaired rules' own destination takes r in ``state`` (r deciding ``dec`` by the paper's
+    rules), by the rules' own functions; or why it does not move r."""
+    from ..rules.repaired.algorithm import align_destination, approach_destination
+    from ..schedulers.round import snapshot
+
+    if repair == "align":
+        got = align_destination(snapshot(state, 0, model))
+    elif repair == "approach":
+        got = approach_destination(dec, model)
+    else:
+        return f"the repair {repair}'s moves are not replayed on their own (they depend on the legs allowed)"
+    return f"the repair {repair} does not move r in the replayed configuration" if got is None else got
+
+
 Known = tuple[str, dict[str, Any]]
 """A counterexample to replay before any search: where it was found (as the reason will say), and its
 trace, or for a claim without a trace ``{"configuration": [...]}``."""
@@ -114,7 +136,7 @@ def replay_known(model: Model, spec: Spec, doc: dict[str, Any], *, initial: bool
     it does not (the readings changed, say), and the search runs. ``initial=False`` also returns a
     violation from a configuration that is not initial (an earlier INCONCLUSIVE row's trace)."""
     if "configuration" in doc:
-        return _replay_configuration(model, spec, doc["configuration"])
+        return _replay_configuration(model, spec, doc["configuration"], doc.get("focus"))
     try:
         state = initial_radii(doc)
         j = int(doc["violation"]["robots"][1])
@@ -128,9 +150,10 @@ def replay_known(model: Model, spec: Spec, doc: dict[str, Any], *, initial: bool
     return got if isinstance(got, Replayed) and (got.initial or not initial) and got.doc is not None else None
 
 
-def _replay_configuration(model: Model, spec: Spec, configuration: Any) -> Replayed | None:
+def _replay_configuration(model: Model, spec: Spec, configuration: Any, focus: Any = None) -> Replayed | None:
     """A trace-less counterexample (``x,y`` strings in lattice units, r first) replayed; for ``closer``
-    each other robot is tried as the one r does not get closer to."""
+    each other robot is tried as the one r does not get closer to (``focus``, its index, first if
+    given: the replay puts it last, so a configuration replayed with its last robot first keeps its order)."""
     try:
         raw = [tuple(Fraction(v) for v in str(p).split(",")) for p in configuration]
     except (TypeError, ValueError, ZeroDivisionError):
@@ -141,6 +164,10 @@ def _replay_configuration(model: Model, spec: Spec, configuration: Any) -> Repla
     r = points[0]
     others = {f"x{k}": (Fraction(p[0] - r[0]), Fraction(p[1] - r[1])) for k, p in enumerate(points[1:], 1)}
     focuses = list(others) if spec.form == CLOSER else [""]
+    first = f"x{focus}" if isinstance(focus, int) and not isinstance(focus, bool) else ""
+    if first in focuses:
+        focuses.remove(first)
+        focuses.insert(0, first)
     for focus in focuses:
         positions = {"r": (Fraction(0), Fraction(0)), **others}
         if focus:
@@ -157,6 +184,10 @@ def _claim_fails(model: Model, spec: Spec, state: Sequence[Point], dec: Decision
     dest = show_point(model.from_lattice(dec.destination))
     if spec.form == X_NONDECREASING:
         return f"r moves to {dest}: x decreases" if dx < 0 else None
+    if spec.form == ON_RMA:
+        right_most = all(p[0] <= state[0][0] for p in state)
+        leaves = right_most and dx != 0
+        return f"r is on the right-most axis and moves to {dest}: it leaves the axis" if leaves else None
     if spec.form == SEEN:
         seen = [c for c, _ in dec.classification]
         if dx > 0 and all(c[0] < dx for c in seen):

@@ -45,6 +45,8 @@ _OPTIONAL_FIELDS: dict[str, type | tuple[type, ...]] = {
     "configuration": list,
     "any_size": bool,
     "fingerprint": (str, type(None)),
+    "decided_by": str,
+    "basis": str,
 }
 LOCK_WAIT = 120.0
 """Seconds a save waits for another run's save into the same directory before giving up."""
@@ -159,6 +161,8 @@ class ProofResults:
             "smt2": r.smt2,
             "trace": trace,
             "configuration": list(r.configuration),
+            "decided_by": r.decided_by,
+            **({"basis": r.basis} if r.basis else {}),
         }
         self._mine.add(key)
         self.save()

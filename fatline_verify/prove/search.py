@@ -37,6 +37,7 @@ the tool and reported as "encoding disagreement".
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -44,6 +45,7 @@ from ..lemmas.properties import Verdict
 from ..model.config import Model
 from ..model.numbers import Point
 from ..outputs import write_text
+from .corpus import CORPUS, EARLIER, GIVEN
 from .replay import Known, Replayed, replay, replay_known
 from .small import SMALL_TEXT, given_counterexample, small_swarm_counterexample
 from .smt.claims import (
@@ -422,11 +424,14 @@ def prove_spec(
     known: Sequence[Known] = (),
     small: bool = True,
     given: Sequence[Given] = (),
+    corpus: Sequence[Known] = (),
 ) -> ProofResult:
     """Decide one obligation (see the module docstring); write its real-number form under ``out``.
     ``small=False`` leaves out the small swarms' enumeration (the solver's search alone). ``given``:
     configurations handed in (``fatline prove --known``), each replayed before any search with every
-    robot tried as r.
+    robot tried as r. ``corpus``: the shipped corpus's candidates (:mod:`~fatline_verify.prove.corpus`),
+    replayed first of all; then ``known`` (an earlier run's), then ``given``. A result says which
+    decided it (:attr:`ProofResult.decided_by`).
 
     The search runs in rounds of growing budget (:func:`rounds`), each round every step that is still
     open (vacuity in the first only), so an easy answer costs a small round and a hard one gets most
@@ -446,21 +451,24 @@ def prove_spec(
         write(full, target)
         path = target.as_posix()
     search = _Search(model, spec, full, path, timeout)
-    for where, doc in known:
-        again = replay_known(model, spec, doc, initial=False)
-        if again is not None and again.initial:
-            return search.result(Verdict.VIOLATED, _found(again, where, how="replayed first"), again)
-        if again is not None and search.non_initial is None:
-            # A violation is known to exist (so no unsat can come): the search looks for an initial one,
-            # and if it finds none the verdict keeps this configuration instead of losing it.
-            search.non_initial = again
-            search.linear_done = True
+    for decider, candidates in ((CORPUS, corpus), (EARLIER, known)):
+        for where, doc in candidates:
+            again = replay_known(model, spec, doc, initial=False)
+            if again is not None and again.initial:
+                first = search.result(Verdict.VIOLATED, _found(again, where, how="replayed first"), again)
+                return replace(first, decided_by=decider)
+            if again is not None and search.non_initial is None:
+                # A violation is known to exist (so no unsat can come): the search looks for an initial one,
+                # and if it finds none the verdict keeps this configuration instead of losing it.
+                search.non_initial = again
+                search.linear_done = True
     for where, radii in given:
         hit = given_counterexample(model, spec, radii)
         if hit is not None:
-            return search.result(
+            first = search.result(
                 Verdict.VIOLATED, _found(hit, f"given with --known {where}", how="replayed first"), hit
             )
+            return replace(first, decided_by=GIVEN)
     for budget in rounds(timeout):
         before = search.spent
         found = search.vacuous(budget) or search.lattices(budget)

@@ -17,9 +17,11 @@ from ..rules import registry
 from ..rules.paper.cases import Case, moving_cases, staying_cases
 from ..rules.repaired.options import RepairProgress
 from ..schedulers.activation import encoded_schedulers
+from .goals import goal_problem
 from .smt.claims import (
     CLOSER,
     GLOBAL,
+    ON_RMA,
     ONE_MOVER,
     SEEN,
     TWO_MOVERS,
@@ -27,6 +29,8 @@ from .smt.claims import (
     Spec,
 )
 from .smt.legs import LegSpec, leg_specs, missing_repairs
+from .smt.live_rules import live_cases
+from .smt.liveness import LiveSpec, live_specs
 
 ENCODED = encoded_schedulers()
 """The schedulers the obligations encode: every mover decides on one shared snapshot."""
@@ -60,8 +64,13 @@ class ProofResult:
     case: str = "any"
     other: str = ""
     configuration: tuple[str, ...] = ()
-    """For a claim without a trace (``seen``, ``x-nondecreasing``, ``closer``): the replayed
+    """For a claim without a trace (``seen``, ``on-rma``, ``x-nondecreasing``, ``closer``): the replayed
     configuration, r first, as exact ``x,y`` strings in lattice units (radii when q = 1)."""
+    decided_by: str = "search"
+    """What decided it (:data:`fatline_verify.prove.corpus.DECIDERS`): the search, or a counterexample
+    replayed first from the shipped corpus, an earlier run, or ``--known``."""
+    basis: str = ""
+    """For PROVED: ``vacuous``, ``immediate`` or ``substantive`` (:mod:`fatline_verify.prove.basis`)."""
 
     @property
     def key(self) -> str:
@@ -80,8 +89,12 @@ DEFAULT_SLOTS = 3
 DEFAULT_TIMEOUT = 60.0
 """Solver seconds per obligation, unless asked otherwise."""
 
-LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
-"""The lemmas the prover decides, in results order."""
+LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH, Lemma.PROGRESS, Lemma.TERMINATION)
+"""The lemmas the prover decides, in results order (progress and termination: the liveness
+obligations, for a rule set that declares them, :mod:`fatline_verify.prove.smt.liveness`)."""
+
+LIVENESS = (Lemma.PROGRESS, Lemma.TERMINATION)
+"""The lemmas of the liveness obligations."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -96,8 +109,9 @@ class GlobalTask:
         return f"{self.lemma}/{GLOBAL}-any"
 
 
-Task = Spec | GlobalTask | LegSpec
-"""An obligation: a decision case of the paper's rules, the global form, or a repaired rule set's leg."""
+Task = Spec | GlobalTask | LegSpec | LiveSpec
+"""An obligation: a decision case of the paper's rules, the global form, a repaired rule set's leg,
+or a liveness obligation."""
 
 
 def rule_groups(cases: Sequence[Case]) -> list[tuple[str, tuple[Case, ...]]]:
@@ -113,7 +127,7 @@ def check_encoded(model: Model) -> None:
     paper's rules in place of a repaired rule set the leg obligations do not cover, never a rule set
     without an encoding of its own (:attr:`fatline_verify.rules.registry.RuleSet.prover`)."""
     rule_set = registry.of(model)
-    if rule_set.prover not in ENCODINGS:
+    if rule_set.prover not in ENCODINGS and rule_set.liveness is None:
         raise NotEncodedModel(
             f"rules={rule_set.name!r}: fatline prove has no encoding of this rule set (it encodes "
             f"{', '.join(ENCODINGS.values())}); expected a rule set it encodes. Use fatline check {model.name}"
@@ -171,8 +185,18 @@ def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: b
     ``two_movers``: also the two-mover obligations (one per pair of rules; searched on the lattices
     only, as their real form is beyond the budgets tried), which ``fatline prove --two-movers`` asks for."""
     check_encoded(model)
+    live = _live_tasks(model, lemmas)
+    if registry.of(model).prover not in ENCODINGS:  # liveness declared, safety not encoded
+        safety = [lemma for lemma in lemmas if lemma not in LIVENESS]
+        if safety and tuple(lemmas) != LEMMAS:
+            raise NotEncodedModel(
+                f"rules={model.rules!r}: fatline prove encodes only this rule set's liveness obligations (it declares "
+                "no safety encoding); expected --lemma progress, termination or liveness. "
+                f"Use fatline check {model.name}"
+            )
+        return live
     if model.options.repaired:
-        return _repaired_tasks(model, lemmas)
+        return _repaired_tasks(model, lemmas) + live
     scheduler = model.options.scheduler
     moving = moving_cases(model)
     stays = tuple(staying_cases(model)) if scheduler is Scheduler.FSYNC else ()
@@ -191,9 +215,31 @@ def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: b
             tasks.append(GlobalTask())
         if lemma is Lemma.RMA_FIXED:
             tasks += [Spec.of(lemma, SEEN, c) for c in moving]
+            tasks += [Spec.of(lemma, ON_RMA, c) for c in moving]
         if lemma is Lemma.APPROACH:
             tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
-    return tasks
+    return tasks + live
+
+
+def _live_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
+    """The liveness obligations of ``lemmas`` for a rule set that declares them. Asked for by name
+    (``--lemma progress``, ``termination``) of one that does not: refused (exit 2)."""
+    asked = tuple(lemma for lemma in lemmas if lemma in LIVENESS)
+    if not asked:
+        return []
+    if registry.of(model).liveness is None:
+        if set(lemmas) <= set(LIVENESS):
+            raise NotEncodedModel(
+                f"rules={model.rules!r}: the rule set declares no liveness obligations (rules/registry.py, "
+                f"RuleSet.liveness); expected a rule set that does. Use fatline check {model.name}"
+            )
+        return []
+    problem = goal_problem(model)
+    if problem and Lemma.PROGRESS in asked:  # the enabledness rows encode goal=vertical-line only
+        if set(lemmas) <= {Lemma.PROGRESS}:
+            raise NotEncodedModel(f"{problem}; expected a model with goal=vertical-line for --lemma progress")
+        asked = tuple(lemma for lemma in asked if lemma is not Lemma.PROGRESS)
+    return list(live_specs(model, live_cases(model), asked))
 
 
 def _repaired_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
@@ -202,14 +248,37 @@ def _repaired_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
     paper's rules under its readings (:func:`paper_part`; the legs' rightward horizontal rests on
     the latter)."""
     moving = moving_cases(paper_part(model))
+    repairs = repair_cases(model)
     tasks: list[Task] = []
     for lemma in lemmas:
         tasks += leg_specs((lemma,))
         if lemma is Lemma.RMA_FIXED:
             tasks += [Spec.of(lemma, SEEN, c) for c in moving]
+            tasks += [Spec.of(lemma, ON_RMA, c) for c in moving]
+            tasks += [Spec(lemma, form, (c,), repair=k) for form in (SEEN, ON_RMA) for k, c in repairs]
         if lemma is Lemma.APPROACH:
             tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
+            tasks += [Spec(lemma, X_NONDECREASING, (c,), repair=k) for k, c in repairs if k != "contract"]
     return tasks
+
+
+def repair_cases(model: Model) -> list[tuple[str, Case]]:
+    """The repaired rule set's own destinations (:data:`~fatline_verify.prove.smt.claims.REPAIRS`) the model
+    turns on, each with the paper case it replaces: ``align`` and ``contract`` the only-A u I stay,
+    ``approach`` each moving Scenario 4 case. (A vertical contraction keeps x: it has seen and on-rma
+    obligations, no x-nondecreasing one, and makes no horizontal leg.)"""
+    from ..rules.paper.algorithm import Rule
+    from ..rules.repaired.algorithm import SCENARIO_4
+    from ..rules.repaired.options import RepairApproach, RepairStack
+
+    paper = paper_part(model)
+    out: list[tuple[str, Case]] = []
+    if model.options.repair_stack is RepairStack.ALIGN:
+        stays = [c for c in staying_cases(paper) if c.rule is Rule.ONLY_AI]
+        out += [(k, c) for k in ("align", "contract") for c in stays]
+    if model.options.repair_approach is RepairApproach.ON:
+        out += [("approach", c) for c in moving_cases(paper) if c.rule in SCENARIO_4]
+    return out
 
 
 CLOSER_RULES = ("scenario-1", "scenario-2", "scenario-3", "uncovered-search")

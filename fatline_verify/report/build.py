@@ -55,7 +55,7 @@ from ..prove.results import ProofResults
 from ..trace.traces import check_replay, load_trace, validate
 from .against_pages import against_entries
 from .data import ModelReport
-from .pages import ASSETS, cross_model_html, cross_model_markdown, model_html, model_markdown
+from .pages import ASSETS, PROVER_LEMMAS, cross_model_html, cross_model_markdown, model_html, model_markdown
 from .pictures import frames
 
 PAGES = ("README.md", "index.html")
@@ -196,6 +196,11 @@ def cached_check(model: Model, cache: Path, traces: Path, refresh: bool) -> dict
     return data
 
 
+REPORTED = PROVER_LEMMAS
+"""The prover's lemmas a report shows and computes: the safety lemmas (the liveness obligations,
+``fatline prove --lemma liveness``, are not in the report's columns)."""
+
+
 def cached_prove(model: Model, proofs: Path, slots: int, timeout: float, refresh: bool) -> dict[str, Any]:
     """The model's prover results (``proofs/MODEL/results.json``): up-to-date rows are reused, the
     others recomputed and merged in; rows of other settings or obligations are kept."""
@@ -203,7 +208,7 @@ def cached_prove(model: Model, proofs: Path, slots: int, timeout: float, refresh
     if refused is not None:
         return refused
     store = ProofResults(model, proofs, proofs / "traces", slots=slots, timeout=timeout)
-    tasks = tasks_for(model)
+    tasks = tasks_for(model, REPORTED)
     todo = tasks if refresh else [t for t in tasks if store.fresh(t) is None]
     if todo:
         prove(model, slots=slots, timeout=timeout, out=proofs, tasks=todo, on_result=store.add)
@@ -298,7 +303,7 @@ def _saved_prove(model: Model, proofs: Path) -> dict[str, Any] | None:
 def _refusal(model: Model, proofs: Path, slots: int, timeout: float) -> dict[str, Any] | None:
     """For a scheduler the prover does not encode, the prover results document saying so; else ``None``."""
     try:
-        tasks_for(model)
+        tasks_for(model, REPORTED)
     except NotEncodedModel as exc:
         store = ProofResults(model, proofs, proofs / "traces", slots=slots, timeout=timeout)
         return {**store.document([]), "not_encoded": str(exc)}

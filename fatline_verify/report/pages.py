@@ -17,6 +17,8 @@ from typing import Any
 from ..lemmas.properties import CHECKED, Lemma
 from ..model.config import IMPLIED
 from ..model.options import CATALOGUE, Scheduler
+from ..prove.basis import counts_text
+from ..prove.coverage import LemmaVerdict, lemma_verdicts
 from ..schedulers.systems import system_for
 from ..text import (
     PROVE_ROBOTS_LEGEND,
@@ -73,6 +75,7 @@ table.matrix { width: 100%; font-size: 0.8em; }
 .matrix th, .matrix td { padding: 0.3em 0.35em; }
 .matrix th.group { text-align: center; }
 .matrix td.notrun { color: #555; font-style: italic; text-align: center; }
+.matrix td.notencoded { color: #555; font-style: italic; }
 .matrix td.model { white-space: nowrap; }
 .matrix td.readings { min-width: 10em; max-width: 14em; }
 .matrix td.readings code { font-size: 0.95em; }
@@ -114,6 +117,36 @@ def _prover_counts(rows: list[dict[str, Any]], lemma: str) -> list[tuple[str, in
 
 def _prover_summary(rows: list[dict[str, Any]], lemma: str) -> str:
     return ", ".join(f"{n} {v}" for v, n in _prover_counts(rows, lemma))
+
+
+def _lemma_verdicts(report: ModelReport) -> dict[str, LemmaVerdict]:
+    """The model's lemma-level prover verdicts (:mod:`fatline_verify.prove.coverage`), by lemma."""
+    rows = report.prove["obligations"]
+    return {v.lemma: v for v in lemma_verdicts(report.model, rows, tuple(lemma.value for lemma in PROVER_LEMMAS))}
+
+
+def _lemma_summary(report: ModelReport, lemma: str) -> str:
+    """A matrix cell: the lemma-level verdict, then its rows' counts (PROVED split by basis)."""
+    v = _lemma_verdicts(report).get(lemma)
+    if v is None or not v.rows:
+        return ""
+    return f"{v.verdict}: {v.counts}"
+
+
+LEMMA_HEAD = ["lemma", "verdict", "obligations", "why"]
+
+
+def _lemma_rows(report: ModelReport) -> list[list[str]]:
+    return [[v.lemma, v.verdict, v.counts, v.why] for v in _lemma_verdicts(report).values() if v.rows]
+
+
+LEMMA_LEGEND = (
+    "A lemma is PROVED only when every part of its argument is (the obligation forms that together imply it), "
+    "VIOLATED only when a replayed counterexample breaks the lemma itself (a lost edge alone is not a split swarm), "
+    "NOT PROVED otherwise (the parts missing named), NOT ENCODED when a part has no obligation form (liveness). "
+    "PROVED obligations are counted by basis: vacuous (the case never fires), immediate (the claim follows from "
+    "the rule's construction: unsat without the case's universal conditions), substantive (the rest)."
+)
 
 
 def _own_rules(report: ModelReport) -> str | None:
@@ -342,7 +375,22 @@ def model_markdown(report: ModelReport) -> str:
     lines += [*_md_table(CHECK_HEAD, _check_rows(report)), "", _search_legend(report), ""]
     lines += ["## Prover (z3, any swarm size)", "", f"Solver: {report.prove['solver']}.", ""]
     unproved = _not_encoded(report)
-    lines += [unproved, ""] if unproved else [*_md_table(PROVE_HEAD, _prove_rows(report)), "", PROVE_LEGEND, ""]
+    lines += (
+        [unproved, ""]
+        if unproved
+        else [
+            *_md_table(LEMMA_HEAD, _lemma_rows(report)),
+            "",
+            LEMMA_LEGEND,
+            "",
+            "Per obligation form:",
+            "",
+            *_md_table(PROVE_HEAD, _prove_rows(report)),
+            "",
+            PROVE_LEGEND,
+            "",
+        ]
+    )
     lines += against_markdown(report.against)
     lines += ["## Counterexamples", "", "Long numbers are rounded (≈); the trace files hold them exactly.", ""]
     for t in report.traces:
@@ -433,7 +481,9 @@ def model_html(report: ModelReport) -> str:
         f"<h2>Prover</h2><p>Solver: {html.escape(report.prove['solver'])}.</p>",
         f"<p>{html.escape(_not_encoded(report))}</p>"
         if _not_encoded(report)
-        else _html_table(PROVE_HEAD, _prove_rows(report), verdict_col=3, nowrap=NOWRAP, detail="detail")
+        else _html_table(LEMMA_HEAD, _lemma_rows(report), nowrap=("lemma", "verdict"))
+        + f'<p class="legend">{html.escape(LEMMA_LEGEND)}</p><h3>Per obligation form</h3>'
+        + _html_table(PROVE_HEAD, _prove_rows(report), verdict_col=3, nowrap=NOWRAP, detail="detail")
         + f'<p class="legend">{html.escape(PROVE_LEGEND)}</p>',
         *([against_html(report.against)] if report.against else []),
         "<h2>Counterexamples</h2>",
@@ -452,7 +502,7 @@ def _matrix(reports: list[ModelReport]) -> tuple[list[str], list[list[str]]]:
     for r in reports:
         row = [r.model.name, _readings(r)]
         row += [_worst(r.check["lemmas"], lemma.value) for lemma in CHECKED]
-        row += [_prover_summary(r.prove["obligations"], lemma.value) for lemma in PROVER_LEMMAS]
+        row += [_lemma_summary(r, lemma.value) for lemma in PROVER_LEMMAS]
         rows.append(row)
     return headers, rows
 
@@ -460,10 +510,11 @@ def _matrix(reports: list[ModelReport]) -> tuple[list[str], list[list[str]]]:
 INTRO = (
     "Which reading of the paper breaks which lemma. *check*: the bounded model checker at each model's bounds "
     "(worst verdict over the robot counts, with the smallest swarm that shows it). "
-    "*prove*: z3 obligations per decision case of the rules (a repaired model: per pair of leg classes), "
-    "counted by verdict; a PROVED one holds for every swarm size. The prover's *rma-fixed* and *approach* are "
-    "per-rule claims (no rule moves r right of every robot it sees; no rule decreases x), not the checker's "
-    "lemmas of those names. "
+    "*prove*: the lemma-level verdict from z3 obligations per decision case of the rules (a repaired model: per "
+    "pair of leg classes): PROVED (for every swarm size) only when the forms that together imply the lemma are all "
+    "PROVED, VIOLATED only by a replayed counterexample of the lemma itself, else NOT PROVED or NOT ENCODED "
+    "(approach is liveness); then the obligations counted by verdict, PROVED split into substantive, immediate "
+    "(true by the rule's construction) and vacuous (the case never fires). "
     "Every VIOLATED verdict has a counterexample trace in `traces/` that `fatline replay` reproduces."
 )
 
@@ -481,8 +532,8 @@ def cross_model_markdown(reports: list[ModelReport]) -> str:
 
 CHECK_TITLE = "bounded model checker: worst verdict over the robot counts, with the smallest swarm that shows it"
 PROVE_TITLE = (
-    "prover: z3 obligations per decision case, counted by verdict (rma-fixed and approach: the per-rule claims "
-    "'never right of every robot seen' and 'x never decreases')"
+    "prover: the lemma-level verdict from the obligation forms that together imply the lemma, then the "
+    "obligations counted by verdict (PROVED: substantive, immediate, vacuous)"
 )
 
 
@@ -500,12 +551,23 @@ def _check_cell(rows: list[dict[str, Any]], lemma: str) -> str:
     return f'<td class="{html.escape(verdict)}">{_verdict_html(verdict)}{swarm}</td>'
 
 
-def _prove_cell(rows: list[dict[str, Any]], lemma: str) -> str:
-    counts = _prover_counts(rows, lemma)
-    if not counts:
+LEMMA_CLASS = {"PROVED": "PROVED", "VIOLATED": "VIOLATED", "NOT PROVED": "INCONCLUSIVE", "NOT ENCODED": "notencoded"}
+"""The colour of a lemma-level verdict's cell (the per-row verdicts' classes)."""
+
+
+def _prove_cell(report: ModelReport, lemma: str) -> str:
+    v = _lemma_verdicts(report).get(lemma)
+    if v is None or not v.rows:
         return "<td></td>"
-    lines = "<br>".join(f"{n}&nbsp;{_verdict_html(v)}" for v, n in counts)
-    return f'<td class="{html.escape(counts[0][0])}">{lines}</td>'
+    rows = [r for r in report.prove["obligations"] if r["lemma"] == lemma]
+    split = f" ({html.escape(counts_text(rows))})" if any(r.get("basis") for r in rows) else ""
+    counts = _prover_counts(rows, lemma)
+    lines = "<br>".join(f"{n}&nbsp;{_verdict_html(k)}" + (split if k == "PROVED" else "") for k, n in counts)
+    title = html.escape(f"{v.verdict}: {v.why}. Obligations: {v.counts}")
+    return (
+        f'<td class="{LEMMA_CLASS[v.verdict]}" title="{title}"><strong>{html.escape(v.verdict)}</strong><br>'
+        f"{lines}</td>"
+    )
 
 
 def _matrix_html(reports: list[ModelReport]) -> str:
@@ -530,7 +592,7 @@ def _matrix_html(reports: list[ModelReport]) -> str:
             title = html.escape(str(r.prove["not_encoded"]))
             cells.append(f'<td class="notrun" colspan="{prove}" title="{title}">{html.escape(not_run)}</td>')
         else:
-            cells += [_prove_cell(r.prove["obligations"], lemma.value) for lemma in PROVER_LEMMAS]
+            cells += [_prove_cell(r, lemma.value) for lemma in PROVER_LEMMAS]
         body.append("<tr>" + "".join(cells) + "</tr>")
     return f'<table class="matrix">{head}{"".join(body)}</table>'
 

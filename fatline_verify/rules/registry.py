@@ -46,6 +46,33 @@ BUILTIN = (
 
 
 @dataclass(frozen=True, slots=True)
+class Liveness:
+    """What a rule set declares so that ``fatline prove`` can state its liveness obligations
+    (:mod:`fatline_verify.prove.live`): its decision cases encoded for the solver, and a ranking measure.
+
+    The measure is lexicographic, each component a sum over the robots of an integer-linear function
+    of the robot's own centre in lattice units, ``a * X + b * Y`` for a component ``(a, b)``. A move
+    must make the mover's own term fall, lexicographically, by at least one lattice unit; since the
+    lexicographic order of integer vectors is compatible with addition, the moves of any set of
+    movers in one round then make the sum fall too (the argument of the obligations' headers)."""
+
+    encoding: str | Callable[..., Any]
+    """The decision cases for the solver: ``"module:function"`` (imported by the prover only, so
+    this package's rule sets never import z3 here) or the function itself (a plug-in's). Called as
+    ``function(model)``, it returns :class:`fatline_verify.prove.smt.live_rules.LiveCase` s, every
+    decision of the rule set in exactly one of them."""
+    measure: tuple[tuple[int, int], ...]
+    """The components ``(a, b)`` of the lexicographic measure, most significant first."""
+    words: str
+    """The measure in words (written in each measure obligation's header)."""
+    bounded: str
+    """Why each component's sum is bounded below on the configurations the rules reach, or that it
+    is not known to be (then the measure rows prove the fall, not termination)."""
+    bounded_proved: bool = False
+    """Whether :attr:`bounded` is an argument for every component (``False``: not argued for some)."""
+
+
+@dataclass(frozen=True, slots=True)
 class RuleSet:
     """One rule set: its name, its decision function and what it declares about itself."""
 
@@ -62,6 +89,8 @@ class RuleSet:
     """Whether pictures shade the acting robot's bands A ... I (the paper's sets)."""
     labels: dict[str, str] = field(default_factory=dict, repr=False, compare=False)
     """What each rule label its decision function returns means (shown beside a deadlock's rules)."""
+    liveness: Liveness | None = field(default=None, compare=False)
+    """What the liveness obligations need (``None``: ``fatline prove`` has none for this rule set)."""
 
     def accepts(self, option: str) -> bool:
         """Whether a model of this rule set may set ``option``."""
@@ -147,6 +176,7 @@ __all__ = [
     "GROUP",
     "MODEL_OPTIONS",
     "Decide",
+    "Liveness",
     "RuleSet",
     "decide",
     "decider",

@@ -392,8 +392,8 @@ class AsyncSystem:
         pos, _ = current_positions(states, self.K)
         return pos
 
-    default_engine = "fast"
-    """The engine ``check`` uses unless told otherwise (there is no compiled one for events yet)."""
+    default_engine = "compiled"
+    """The engine ``check`` uses unless told otherwise (:mod:`fatline_verify.check.compiled_async`)."""
 
     family = "async"
     """Engines: :data:`fatline_verify.check.engines.BUILDERS`."""

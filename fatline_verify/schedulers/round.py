@@ -12,14 +12,13 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import ClassVar
 
-import networkx as nx
 
 from ..lemmas.properties import Lemma
 from ..model.config import Model
 from ..model.geometry import Path, path_point_dist2, paths_any_speed_dist2, paths_lockstep_dist2
 from ..model.numbers import Number, Point
 from ..model.options import Contact, Timing
-from ..model.swarm import State, is_connected, visibility_graph
+from ..model.swarm import State, components, is_connected
 from ..rules.paper.algorithm import Decision
 from ..rules.registry import decider
 
@@ -177,7 +176,7 @@ def disconnection(before: Sequence[Point], after: Sequence[Point], model: Model)
         return None
     if is_connected(after, model) or not is_connected(before, model):
         return None
-    comps = sorted(tuple(sorted(c)) for c in nx.connected_components(visibility_graph(after, model)))
+    comps = sorted(components(after, model))
     return Disconnection(tuple(comps), lost)
 
 

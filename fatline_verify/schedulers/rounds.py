@@ -18,7 +18,7 @@ import numpy as np
 
 from ..errors import InvalidInput, InvalidTrace
 from ..model.config import Model
-from ..model.lattice import KeyCodec, canonical
+from ..model.lattice import KeyCodec, canonical, key_codec
 from ..model.options import Scheduler
 from ..model.swarm import State, is_goal
 from .activation import RoundScheduler, round_scheduler
@@ -182,7 +182,7 @@ class RoundSystem:
         return canonical(states)
 
     def codec(self, n: int, window: tuple[int, int]) -> Codec:
-        return KeyCodec(n, window)
+        return key_codec(n, window)
 
     def array_positions(self, states: np.ndarray) -> np.ndarray:
         return states

@@ -92,9 +92,9 @@ class Covered:
     replays: int
 
 
-def cover(space: Space, among: np.ndarray, judge: Judge) -> Covered:
+def cover(space: Space, among: np.ndarray, judge: Judge, tick: Callable[[int], None] | None = None) -> Covered:
     """Judge every combination of ``among`` (a mask over ``space``) with as few replays as the
-    decision tree of ``judge`` over the varied options has leaves."""
+    decision tree of ``judge`` over the varied options has leaves; ``tick`` hears the replays so far."""
     refuted = np.zeros(space.size, dtype=bool)
     digits = space.digits
     stack = [np.flatnonzero(among)]
@@ -107,6 +107,8 @@ def cover(space: Space, among: np.ndarray, judge: Judge) -> Covered:
         recorder = Recorder(space.options(combo), space.names)
         got = judge(replace(space.base, options=recorder))  # type: ignore[arg-type]
         replays += 1
+        if tick is not None:
+            tick(replays)
         for k, name in enumerate(space.names):
             if name in recorder.reads:
                 same = digits[inside, k] == combo[name]

@@ -76,7 +76,7 @@ def held_past_violations(ex: Exploration) -> frozenset[Lemma]:
     if ex.truncated:
         return frozenset()
     expanded = ex.expanded
-    held = {lemma for lemma in SAFETY if not np.any(expanded[ex.edge_src] & ((ex.edge_flags & lemma.flag) != 0))}
+    held = {lemma for lemma in SAFETY if ex.least_violating(lemma.flag) is None}
     if ex.escaped:
         return frozenset(held & set(CHECKED))
     terminal = expanded & (ex.enabled == 0)
@@ -123,14 +123,24 @@ class Equivalence:
 
     same: np.ndarray
     replays: int
+    peak: int = 0
+    """The most bytes a spread closure's sets of combinations held (0: not a spread)."""
 
 
 def same_exploration(
-    space: Space, among: np.ndarray, reference: Model, explored: list[Explored], lemma: Lemma
+    space: Space,
+    among: np.ndarray,
+    reference: Model,
+    explored: list[Explored],
+    lemma: Lemma,
+    tick: Callable[[int], None] | None = None,
+    work: int = 0,
 ) -> Equivalence:
     """Of ``among`` (a mask over ``space``), the combinations whose continued (or stopped) graph at the
     same bounds ``lemma`` sees as the reference model's, robot count by robot count (see the module
-    docstring); ``explored``: the reference's explorations, all continued or all stopped."""
+    docstring); ``explored``: the reference's explorations, all continued or all stopped; ``tick`` hears
+    the replays so far. ``work`` > 0: past this many replays nothing is closed (equality is known only
+    once every signature was judged)."""
     same = among.copy()
     replays = 0
     for ex in explored:
@@ -143,7 +153,13 @@ def same_exploration(
         for signature in signatures:
             if not same.any():
                 return Equivalence(same, replays)
-            judged = cover(space, same, partial(_same, signature, signature(reference)))
+            if work and replays >= work:
+                return Equivalence(np.zeros_like(among), replays)
+            sofar = replays
+            inner = None if tick is None else (lambda r: tick(sofar + r))  # noqa: B023 (used at once)
+            judged = cover(space, same, partial(_same, signature, signature(reference)), tick=inner)
             replays += judged.replays + 1
+            if tick is not None:
+                tick(replays)
             same &= judged.refuted
     return Equivalence(same, replays)

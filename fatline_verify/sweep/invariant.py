@@ -23,6 +23,7 @@ in a state's decision is still closed if its own decision stays in E.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import partial
 
@@ -187,6 +188,9 @@ def within_known(
     grow: int = 0,
     taken: Ranks | None = None,
     lemma: Lemma = Lemma.PROGRESS,
+    budget: int = 0,
+    tick: Callable[[int], None] | None = None,
+    work: int = 0,
 ) -> Equivalence:
     """Of ``among`` (a mask over ``space``), the combinations under which ``progress`` holds because
     every state their own search reaches is one of ``known`` (the states earlier checks expanded, per
@@ -213,26 +217,49 @@ def within_known(
     combinations that reach it, up to ``grow`` new states per robot count. The spread is then every
     open combination's own search at once, and what is left is exactly where no deadlock is reached.
     ``taken``: where to record every transition the spread followed out of a non-goal state (so that
-    :func:`spread_termination` can rank them)."""
+    :func:`spread_termination` can rank them).
+
+    ``budget`` > 0: the bytes the spread's sets of combinations may hold (per state a bit per
+    combination, and the combinations not yet passed on); combinations that would pass it are dropped
+    like those that leave what is known: fewer closed, none closed wrongly. ``work`` > 0: per robot
+    count, the answers (a state's expansion under a class of combinations) the spread may use; past
+    them it stops, and every combination whose search is not finished (some state it reached not yet
+    passed on) is dropped. Both bounds are counted the same however much ``memo`` remembers, so a run
+    with an empty memo closes what one with a full memo closes. ``tick`` hears the states passed on
+    so far."""
     before = memo.replays
     alive = among.copy()
+    done = peak = 0
     for trap in known:
         where = (trap.n, trap.bound)
         rank = None if ranks is None else ranks.rank(trap.n, trap.bound, trap.window)
         spread = _Spread(
-            {key.tobytes() for key in trap.states}, np.flatnonzero(alive), alive, 0 if rank is not None else grow
+            {key.tobytes() for key in trap.states},
+            np.flatnonzero(alive),
+            alive,
+            0 if rank is not None else grow,
+            budget,
         )
         initial = memo.answers(("initial", *where, trap.window), partial(_initial, trap), spread.ids)
+        answered = 0
         for inside, keys in list(initial):
+            answered += 1
             for key in keys:
                 spread.add(key.tobytes(), spread.positions(inside))
         dtype = trap.states.dtype
         while spread.pending:
+            if work and answered >= work:
+                spread.abandon()  # out of work: what is not finished is not judged here
+                break
             key, delta = spread.pop()
+            done += 1
+            if tick is not None:
+                tick(done)
             if not len(delta):
                 continue
             compute = partial(_step, trap, np.frombuffer(key, dtype=dtype).copy())
             for inside, step in list(memo.answers(("step", *where, key), compute, delta)):
+                answered += 1
                 if _broken(lemma, step):
                     alive[inside] = False  # a deadlock, or a violating transition
                     continue
@@ -246,10 +273,20 @@ def within_known(
                     taken.take(
                         (trap.n, trap.bound, trap.window), key, step.followed[:0] if step.goal else step.followed
                     )
-    return Equivalence(alive, memo.replays - before)
+        peak = max(peak, spread.peak)
+    return Equivalence(alive, memo.replays - before, peak)
 
 
-def spread_termination(space: Space, among: np.ndarray, known: list[Trap], memo: Memo, grow: int) -> Equivalence:
+def spread_termination(
+    space: Space,
+    among: np.ndarray,
+    known: list[Trap],
+    memo: Memo,
+    grow: int,
+    budget: int = 0,
+    tick: Callable[[int], None] | None = None,
+    work: int = 0,
+) -> Equivalence:
     """Of ``among``, the combinations under which ``termination`` holds because no transition of their
     own search lies on a cycle of *any* of their searches.
 
@@ -259,15 +296,18 @@ def spread_termination(space: Space, among: np.ndarray, known: list[Trap], memo:
     component's place). Then :func:`within_known` with those ranks keeps the combinations whose every
     followed transition out of a non-goal state goes strictly up, nothing escaping and no deadlock:
     such a search never takes a transition inside a component of U, so its non-goal graph (a
-    subgraph of U) has no cycle, fair or not, and the checker finds termination holding."""
+    subgraph of U) has no cycle, fair or not, and the checker finds termination holding. ``budget``,
+    ``work`` and ``tick``: as for :func:`within_known`, each pass."""
     union = Ranks()
-    first = within_known(space, among, known, memo, grow=grow, taken=union)
+    first = within_known(space, among, known, memo, grow=grow, taken=union, budget=budget, tick=tick, work=work)
     ranked = [
         Trap(t.n, t.bound, t.window, np.union1d(t.states, union.states(t.n, t.bound, t.window, t.states.dtype)))
         for t in known
     ]
-    second = within_known(space, among & first.same, ranked, memo, union.by_components())
-    return Equivalence(second.same, first.replays + second.replays)
+    second = within_known(
+        space, among & first.same, ranked, memo, union.by_components(), budget=budget, tick=tick, work=work
+    )
+    return Equivalence(second.same, first.replays + second.replays, max(first.peak, second.peak))
 
 
 def _up(rank: dict[bytes, int], key: bytes, step: Step) -> bool:
@@ -352,32 +392,84 @@ class _Spread:
     """A mask over every combination, shared with the caller: the ones still judged."""
     grow: int = 0
     """How many more unknown states may be taken in."""
+    budget: int = 0
+    """Bytes ``reach`` and ``pending`` may hold (0: no bound)."""
     reach: dict[bytes, np.ndarray] = field(default_factory=dict)
+    """Per state, a bit per position (packed, little bit order): the combinations that reach it."""
     pending: dict[bytes, list[np.ndarray]] = field(default_factory=dict)
+    used: int = 0
+    """Bytes ``reach`` and ``pending`` hold now."""
+    peak: int = 0
 
     def positions(self, combos: np.ndarray) -> np.ndarray:
         return np.searchsorted(self.ids, combos)
+
+    def _drop(self, positions: np.ndarray) -> None:
+        self.alive[self.ids[positions]] = False
+
+    def _fits(self, more: int) -> bool:
+        return not self.budget or self.used + more <= self.budget
 
     def add(self, key: bytes, positions: np.ndarray) -> None:
         positions = positions[self.alive[self.ids[positions]]]
         if not len(positions):
             return
-        if key not in self.states:
-            if self.grow <= 0:
-                self.alive[self.ids[positions]] = False  # it leaves what is known: not judged here
-                return
-            self.states.add(key)
-            self.grow -= 1
         mask = self.reach.get(key)
         if mask is None:
-            mask = self.reach[key] = np.zeros(len(self.ids), dtype=bool)
-        new = positions[~mask[positions]]
-        if len(new):
-            mask[new] = True
-            self.pending.setdefault(key, []).append(new)
+            unknown = key not in self.states
+            size = (len(self.ids) + 7) // 8
+            if (unknown and self.grow <= 0) or not self._fits(size + 4 * len(positions)):
+                self._drop(positions)  # it leaves what is known, or the budget: not judged here
+                return
+            if unknown:
+                self.states.add(key)
+                self.grow -= 1
+            mask = self.reach[key] = np.zeros(size, dtype=np.uint8)
+            self.used += size
+        new = positions[~_bits(mask, positions, len(self.ids))]
+        if not len(new):
+            return
+        if not self._fits(4 * len(new)):
+            self._drop(new)
+            return
+        _set_bits(mask, new, len(self.ids))
+        self.pending.setdefault(key, []).append(new.astype(np.int32))
+        self.used += 4 * len(new)
+        self.peak = max(self.peak, self.used)
+
+    def abandon(self) -> None:
+        """Drop every combination not yet passed on from some state (its search is not finished)."""
+        for parts in self.pending.values():
+            for part in parts:
+                self._drop(part)
+        self.pending.clear()
+        self.used = 0
 
     def pop(self) -> tuple[bytes, np.ndarray]:
         """A state with combinations not yet passed on, and those still judged (numbers, sorted)."""
         key, parts = self.pending.popitem()
+        self.used -= sum(4 * len(p) for p in parts)
         combos = self.ids[np.sort(np.concatenate(parts))]
         return key, combos[self.alive[combos]]
+
+
+SPARSE = 256
+"""Positions fewer than one in this many of the bits: read and set them one by one; more: unpack the
+whole mask once (a bit operation per position costs about as much as unpacking this many bits)."""
+
+
+def _bits(mask: np.ndarray, positions: np.ndarray, n: int) -> np.ndarray:
+    """The bits at ``positions`` of the packed ``mask`` of ``n`` bits (little bit order), as booleans."""
+    if len(positions) * SPARSE < n:
+        return ((mask[positions >> 3] >> (positions & 7).astype(np.uint8)) & 1).astype(bool)
+    return np.unpackbits(mask, count=n, bitorder="little").view(bool)[positions]
+
+
+def _set_bits(mask: np.ndarray, positions: np.ndarray, n: int) -> None:
+    """Set the bits at ``positions`` (each once) of the packed ``mask`` of ``n`` bits."""
+    if len(positions) * SPARSE < n:
+        np.bitwise_or.at(mask, positions >> 3, np.left_shift(1, positions & 7).astype(np.uint8))
+        return
+    bits = np.unpackbits(mask, count=n, bitorder="little").view(bool)
+    bits[positions] = True
+    mask[:] = np.packbits(bits, bitorder="little")

@@ -23,6 +23,16 @@ from ..model.config import Model
 from .cover import Recorder
 from .space import Space
 
+NODE = 200
+"""Bytes of one tree node, about (its object and its place in the parent's dict)."""
+
+
+def _bytes(answer: Any) -> int:
+    """Bytes of an answer's arrays, about."""
+    if isinstance(answer, np.ndarray):
+        return int(answer.nbytes)
+    return sum(int(v.nbytes) for v in (getattr(answer, "followed", None),) if isinstance(v, np.ndarray)) + NODE
+
 
 @dataclass(slots=True)
 class _Node:
@@ -40,8 +50,14 @@ class Memo:
     """Answers of questions under the combinations of ``space``, each a decision tree over the reads."""
 
     space: Space
+    limit: int = 0
+    """Bytes the trees may hold, about (0: no bound); past it they are forgotten at the next question
+    (the same answers, replayed again as asked)."""
     trees: dict[Hashable, _Node] = field(default_factory=dict)
     replays: int = 0
+    size: int = 0
+    """Bytes the trees hold, about: the answers' arrays and a node's overhead."""
+    forgotten: int = 0
 
     def answers(
         self, question: Hashable, compute: Callable[[Model], Any], among: np.ndarray
@@ -49,6 +65,10 @@ class Memo:
         """For ``among`` (combination numbers), pairs (the combinations, their answer) that partition
         it; ``compute(model)`` answers the question under a model (it is replayed, through a
         :class:`Recorder`, only where the tree does not know the branch yet)."""
+        if self.limit and self.size > self.limit:
+            self.trees.clear()
+            self.size = 0
+            self.forgotten += 1
         root = self.trees.setdefault(question, _Node())
         digits = self.space.digits
         stack: list[tuple[_Node, np.ndarray, tuple[int, ...]]] = [(root, among, ())]
@@ -84,3 +104,4 @@ class Memo:
             here.option = column
             here = here.children.setdefault(combo[names[column]], _Node())
         here.leaf, here.answer = True, answer
+        self.size += NODE * (1 + len(path) - len(above)) + _bytes(answer)

@@ -1,27 +1,29 @@
 """``fatline sweep``: each lemma's verdict over a whole product of readings, covered by counterexamples.
 
 Checking each of a million combinations is out of reach; most of them fall to the same few
-counterexamples. So: check one open combination with the bounded checker; replay each witness it
-finds under every combination still open for that lemma (:func:`fatline_verify.sweep.cover.cover`)
-and close every one it refutes; a lemma that is not violated there gets that one combination's
-verdict (HOLDS_WITHIN_BOUNDS or INCONCLUSIVE), and where it holds, so does every combination that
-cannot tell its reason apart: a safety lemma's (or ``approach``'s) by graph equality
+counterexamples. So: check one open combination with the bounded checker
+(:func:`fatline_verify.sweep.check.check_combo`); replay each witness it finds under every
+combination still open for that lemma (:func:`fatline_verify.sweep.cover.cover`) and close every one
+it refutes; a lemma that is not violated there gets that one combination's verdict
+(HOLDS_WITHIN_BOUNDS or INCONCLUSIVE), and where it holds, so does every combination that cannot tell
+its reason apart: a safety lemma's (or ``approach``'s) by graph equality
 (:mod:`fatline_verify.sweep.equivalent`), ``progress``'s and ``termination``'s by an invariant over
 the states the checks expanded (:mod:`fatline_verify.sweep.invariant`). Repeat until nothing is
-open, or the check budget is spent. Each finished check is saved at once (``sweep.json`` +
-``status.npz`` + the witnesses), and a rerun with the same settings resumes from there.
+open, the check budget is spent, or the time is up.
+
+Each *step* (one lemma closed from one check) is saved at once (:mod:`fatline_verify.sweep.state`),
+and a rerun with the same settings resumes from there, closing what a fresh run would. Memory is
+bounded by ``max_memory``: the checks' searches, the remembered answers (:class:`Memo`) and the spread
+closures each get a share of it (a spread that would pass its share leaves the combinations it cannot
+follow open: fewer closed, none closed wrongly).
 """
 
 from __future__ import annotations
 
 import contextlib
-import io
-import os
-import re
 import time
-import zipfile
-from collections.abc import Callable, Iterable, Iterator
-from dataclasses import dataclass, field, replace
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
 from typing import Any
@@ -29,19 +31,23 @@ from typing import Any
 import numpy as np
 
 from ..cache import fingerprint
-from ..errors import InvalidInput, OutputFailed
-from ..integrity import bytes_digest, file_digest, matches, seal, sealed
-from ..lemmas.properties import CHECKED, Lemma, LemmaResult, Verdict
-from ..model.config import Model, model_to_mapping
-from ..outputs import Kind, NotReadable, load_json, os_error_text, read_regular, write_bytes, write_json
+from ..lemmas.properties import CHECKED, Lemma, Verdict
+from ..model.config import model_to_mapping
+from ..outputs import write_json
+from . import state
+from .check import Doing, Found, SweepBounds, check_combo, check_job
 from .cover import cover, refutes
-from .equivalent import Equivalence, Explored, held_past_violations, same_exploration
+from .equivalent import Equivalence, Explored, same_exploration
 from .invariant import SPREAD_SAFETY, TRAPPED, Trap, spread_termination, trapped, within_known
 from .memo import Memo
 from .space import Space, bearing
+from .state import FORMAT, HOLDS, INCONCLUSIVE, OPEN, REFUTED, VERSION, Where
+from .text import headline, sweep_lines
 
-OPEN, REFUTED, HOLDS, INCONCLUSIVE = 0, 1, 2, 3
-"""A combination's status for one lemma."""
+__all__ = [
+    "HOLDS", "INCONCLUSIVE", "OPEN", "REFUTED", "Doing", "Found", "Sweep", "SweepBounds", "check_combo", "headline",
+    "sweep_lines",
+]  # fmt: skip
 
 STATUS = {REFUTED: Verdict.VIOLATED, HOLDS: Verdict.HOLDS_WITHIN_BOUNDS, INCONCLUSIVE: Verdict.INCONCLUSIVE}
 
@@ -50,123 +56,55 @@ GROW = 200_000
 expanded, per robot count: the open readings' searches run together (:func:`within_known`) until they
 are done or this many new states were met."""
 
-FORMAT = Kind.SWEEP.value
-VERSION = 1
-STATUS_FILE = "status.npz"
+WORK = 20_000
+"""Answers a spread closure may use per robot count (a state's expansion under one class of readings;
+about one replay each when nothing is remembered), and replays a graph-equality closure may make:
+past them the readings not yet shown alike stay open for a later check, and a step ends in minutes,
+not hours. ``fatline sweep`` bounds closures so when it has a time limit (``--max-time``); without one
+they run to the end, which closes far more per check (the shipped rma-fixed sweep closed 497,664
+readings by graph equality in 3.3 million replays)."""
 
-
-@dataclass(frozen=True, slots=True)
-class SweepBounds:
-    """The checker's bounds for every combination checked."""
-
-    robots: tuple[int, int]
-    window: tuple[int, int]
-    engine: str | None = None
-    max_states: int | None = None
-    bound: tuple[int, int] | None = None
-    """The exploration bound (``None``: the window)."""
-
-    def as_json(self) -> dict[str, Any]:
-        """The bounds as saved (and fingerprinted: a sweep without ``bound`` keeps the fingerprint it had
-        before the option existed, so it still resumes)."""
-        out: dict[str, Any] = {"robots": list(self.robots), "window": list(self.window), "max_states": self.max_states}
-        if self.bound is not None and self.bound != self.window:
-            out["bound"] = list(self.bound)
-        return out
-
-
-@dataclass(frozen=True, slots=True)
-class Found:
-    """What one check found at one combination: per lemma the verdict and, if violated, the witness;
-    and what it explored (for :func:`fatline_verify.sweep.equivalent.same_exploration`)."""
-
-    combo: dict[str, int]
-    verdicts: dict[Lemma, Verdict]
-    witnesses: dict[Lemma, dict[str, Any]]
-    seconds: float
-    explored: tuple[Explored, ...] = ()
-    """The robot counts explored past violations (only when some lemma holds)."""
-    held: frozenset[Lemma] = frozenset()
-    """The lemmas that hold there too."""
-    stopped: tuple[Explored, ...] = ()
-    """The robot counts as the check explored them, stopping at violations (only when some lemma holds)."""
-
-
-def check_combo(model: Model, bounds: SweepBounds, combo: dict[str, int]) -> Found:
-    """The bounded check of ``model`` (one combination's readings): worst verdict per lemma over the
-    robot counts, the witness of the smallest violating count (replayed by the checker); then, if a
-    lemma holds, what those counts expanded, and the same counts explored past violations
-    (:mod:`fatline_verify.sweep.equivalent`)."""
-    from ..check.checker import CheckPlan, explore_robots, lemma_verdicts
-
-    t0 = time.perf_counter()
-    plan = CheckPlan.of(
-        model, bounds.robots, bounds.window, max_states=bounds.max_states, engine=bounds.engine, bound=bounds.bound
-    )
-    stops = [explore_robots(plan, n) for n in plan.counts]
-    verdicts = _worst(lemma_verdicts(ex) for ex in stops)
-    witnesses: dict[Lemma, dict[str, Any]] = {}
-    explored: list[Explored] = []
-    stopped: tuple[Explored, ...] = ()
-    held: frozenset[Lemma] = frozenset()
-    if any(v is Verdict.HOLDS_WITHIN_BOUNDS for v, _ in verdicts.values()):
-        stopped = tuple(Explored.of(ex, stopped=True) for ex in stops)
-        go_on = replace(plan, after_violation="continue")
-        held = frozenset(CHECKED)
-        for n in plan.counts:
-            ex = explore_robots(go_on, n)
-            explored.append(Explored.of(ex, stopped=False))
-            held &= held_past_violations(ex)
-    witnesses = {lemma: doc for lemma, (v, doc) in verdicts.items() if v is Verdict.VIOLATED and doc is not None}
-    return Found(
-        combo, {lemma: v for lemma, (v, _) in verdicts.items()}, witnesses, time.perf_counter() - t0,
-        tuple(explored), held, stopped,
-    )  # fmt: skip
-
-
-def _worst(runs: Iterable[list[LemmaResult]]) -> dict[Lemma, tuple[Verdict, dict[str, Any] | None]]:
-    """Per checked lemma, the worst verdict over the robot counts (smallest first) and the witness of
-    the first violating count."""
-    order = [Verdict.VIOLATED, Verdict.INCONCLUSIVE, Verdict.HOLDS_WITHIN_BOUNDS]
-    out: dict[Lemma, tuple[Verdict, dict[str, Any] | None]] = {}
-    for results in runs:
-        for r in results:
-            if r.lemma not in CHECKED:
-                continue
-            now, doc = out.get(r.lemma, (Verdict.HOLDS_WITHIN_BOUNDS, None))
-            if order.index(r.verdict) < order.index(now):
-                now, doc = r.verdict, r.witness
-            out[r.lemma] = (now, doc)
-    return out
-
-
-def _check_job(args: tuple[Model, SweepBounds, dict[str, int]]) -> Found:
-    return check_combo(*args)
+MEMO_SHARE = 4
+"""The remembered answers may hold ``max_memory / MEMO_SHARE`` (then they are forgotten and replayed
+again as asked: the same answers, more replays)."""
+SPREAD_SHARE = 4
+"""A spread closure may hold ``max_memory / SPREAD_SHARE`` in its per-state sets of combinations."""
+CHECK_SHARE = 2
+"""A check's search may hold ``max_memory / CHECK_SHARE`` (the checker's own guard)."""
 
 
 @dataclass
 class Sweep:
     """The sweep of ``space`` (every varied option) at ``bounds``; each lemma judged over the options
-    that bear on it (:func:`fatline_verify.sweep.space.bearing`)."""
+    that bear on it (:func:`fatline_verify.sweep.space.bearing`). ``max_memory``: bytes the run may hold
+    (0: no bound)."""
 
     space: Space
     bounds: SweepBounds
     out: Path
     lemmas: tuple[Lemma, ...] = CHECKED
+    max_memory: int = 0
+    work: int = 0
+    """Answers or replays a closure may use (:data:`WORK`; 0: no bound, as for the shipped sweeps)."""
     spaces: dict[Lemma, Space] = field(init=False)
     status: dict[Lemma, np.ndarray] = field(init=False)
     witnesses: list[dict[str, Any]] = field(default_factory=list)
     checks: list[dict[str, Any]] = field(default_factory=list)
     replays: int = 0
+    known: dict[Where, np.ndarray] = field(default_factory=dict, repr=False)
+    """Per robot count and bounds, every state the checks so far expanded (for :meth:`_within_known`; saved)."""
+    pending: list[dict[str, int]] = field(default_factory=list)
+    """The check under way: the combinations picked and not yet closed from (saved)."""
+    absorbed: list[Lemma] = field(default_factory=list)
+    """The lemmas already closed from the first of ``pending`` (saved)."""
+    doing: Doing = field(default_factory=Doing, repr=False)
     _projections: dict[Lemma, np.ndarray] = field(default_factory=dict, init=False, repr=False)
     _memo: Memo = field(init=False, repr=False)
-    _known: dict[tuple[int, tuple[int, int], tuple[int, int]], np.ndarray] = field(default_factory=dict, repr=False)
-    """Per robot count and bounds, every state the checks of this run expanded (for :meth:`_within_known`)."""
 
     def __post_init__(self) -> None:
         self.spaces = {lemma: Space(self.space.base, bearing(lemma, self.space.names)) for lemma in self.lemmas}
         self.status = {lemma: np.zeros(s.size, dtype=np.uint8) for lemma, s in self.spaces.items()}
-        self._memo = Memo(self.space)
+        self._memo = Memo(self.space, limit=self.max_memory // MEMO_SHARE)
 
     # --- files -----------------------------------------------------------------------------------
     @property
@@ -175,7 +113,7 @@ class Sweep:
 
     @property
     def status_path(self) -> Path:
-        return self.out / "status.npz"
+        return self.out / state.STATUS_FILE
 
     def trace_path(self, lemma: Lemma, k: int) -> Path:
         return self.out / "traces" / f"{lemma.value}-{k}.json"
@@ -191,123 +129,21 @@ class Sweep:
         )
 
     def resume(self) -> bool:
-        """Load a saved sweep with the same settings; ``False`` if there is none. A saved sweep with
-        other settings is refused (it is not this sweep's to overwrite), and so is one whose files do
-        not match the digests ``sweep.json`` records (or, for a sweep saved before digests, whose
-        ``status.npz`` does not match the counts ``sweep.json`` records): never a verdict nobody computed."""
-        if not self.json_path.exists():
-            return False
-        where = f"out={str(self.out)!r}: sweep.json"
-        data = load_json(self.json_path, what=where, expected="the sweep.json fatline sweep wrote (or a new --out)")
-        if not isinstance(data, dict) or data.get("format") != FORMAT:
-            raise InvalidInput(f"out={str(self.out)!r}: sweep.json there is not a fatline sweep; expected a new --out")
-        digests = data.get("files") if sealed(data, self.json_path) else None
-        if data.get("fingerprint") != self.fingerprint():
-            raise InvalidInput(
-                f"out={str(self.out)!r}: holds a sweep with other settings (model, --vary, --lemma or bounds); "
-                "expected another --out, or the same settings to resume it"
-            )
-        witnesses, checks, replays = data.get("witnesses"), data.get("checks"), data.get("replays", 0)
-        if (
-            not isinstance(witnesses, list)
-            or not isinstance(checks, list)
-            or not isinstance(replays, int)
-            or not all(self._witness_ok(w) for w in witnesses)
-            or (
-                digests is not None
-                and (
-                    not isinstance(digests, dict)
-                    or STATUS_FILE not in digests
-                    or set(digests) != {STATUS_FILE, *(w["trace"] for w in witnesses)}
-                )
-            )
-        ):
-            raise InvalidInput(
-                f"{where}: witnesses, checks, replays or files malformed; expected the file fatline sweep wrote"
-            )
-        if digests is not None:
-            self._roll_forward(digests.get(STATUS_FILE))
-            for name, digest in digests.items():
-                if not matches(self.out / name, digest):
-                    raise OutputFailed(
-                        f"{(self.out / name).as_posix()}: its content does not match the digest sweep.json records "
-                        "(changed since fatline sweep wrote it); expected the sweep as fatline left it, or a new --out"
-                    )
-        try:
-            raw = read_regular(self.status_path)
-            with np.load(io.BytesIO(raw), allow_pickle=False) as saved:
-                loaded = {lemma: saved[lemma.value] for lemma in self.lemmas}
-        except (NotReadable, KeyError, ValueError, OSError, EOFError, zipfile.BadZipFile) as exc:
-            raise InvalidInput(
-                f"out={str(self.out)!r}: status.npz cannot be read ({exc}); expected the sweep as fatline left it"
-            ) from None
-        for lemma, got in loaded.items():
-            if got.shape != self.status[lemma].shape or got.dtype.kind not in "iu" or (len(got) and got.max() > 3):
-                raise InvalidInput(f"out={str(self.out)!r}: status.npz does not match sweep.json")
-            self.status[lemma] = got.astype(np.uint8)
-        self.witnesses = list(witnesses)
-        self.checks = list(checks)
-        self.replays = replays
-        if digests is None:  # saved before digests: its counts must be the ones sweep.json records
-            self._agrees(data)
-        return True
-
-    def _witness_ok(self, w: object) -> bool:
-        """A witness entry names a trace inside ``traces/`` of one of the sweep's lemmas."""
-        if not isinstance(w, dict) or w.get("lemma") not in {lemma.value for lemma in CHECKED}:
-            return False
-        trace = w.get("trace")
-        return isinstance(trace, str) and re.fullmatch(rf"traces/{re.escape(w['lemma'])}-\d+\.json", trace) is not None
-
-    def _agrees(self, data: dict[str, Any]) -> None:
-        """A sweep saved before digests: each lemma's counts (and first readings where it holds) in
-        ``status.npz`` must be those ``sweep.json`` records beside them."""
-        recorded = {s.get("lemma"): s for s in data.get("lemmas", []) if isinstance(s, dict)}
-        for lemma in self.lemmas:
-            mine, theirs = self.lemma_summary(lemma), recorded.get(lemma.value, {})
-            keys = ("refuted", "holds", "inconclusive", "open", "holds_under")
-            if any(mine[k] != theirs.get(k) for k in keys):
-                raise OutputFailed(
-                    f"{self.status_path.as_posix()}: does not match the counts sweep.json records for {lemma.value} "
-                    "(changed since fatline sweep wrote it); expected the sweep as fatline left it, or a new --out"
-                )
-
-    def _pending(self, digest: str) -> Path:
-        """Where a save puts the new status before ``sweep.json`` names it (named by its digest)."""
-        return self.out / f".status-{digest.removeprefix('sha256:')[:16]}.npz"
-
-    def _roll_forward(self, digest: object) -> None:
-        """Finish a save killed between writing ``sweep.json`` and renaming the status it names."""
-        if isinstance(digest, str) and not matches(self.status_path, digest) and matches(self._pending(digest), digest):
-            os.replace(self._pending(digest), self.status_path)
+        """Load a saved sweep with the same settings (:func:`fatline_verify.sweep.state.resume`)."""
+        return state.resume(self)
 
     def save(self) -> None:
-        """Save the status, the witnesses' digests and everything else: the status under a name of its own,
-        then ``sweep.json`` (the manifest, last: the digests of the status and of every witness trace), then
-        the status renamed into place. Killed anywhere, the next run finds the old sweep or the new one
-        (:meth:`_roll_forward`), never a status without its counterexamples."""
-        self.out.mkdir(parents=True, exist_ok=True)
-        buffer = io.BytesIO()
-        arrays: dict[str, Any] = {lemma.value: self.status[lemma] for lemma in self.lemmas}
-        np.savez_compressed(buffer, **arrays)
-        raw = buffer.getvalue()
-        digest = bytes_digest(raw)
-        write_bytes(self._pending(digest), raw)
-        files = {STATUS_FILE: digest}
-        for w in self.witnesses:
-            files[w["trace"]] = file_digest(self.out / w["trace"])
-        write_json(self.json_path, seal({**self.to_json(), "files": files}))
-        try:
-            os.replace(self._pending(digest), self.status_path)
-        except OSError as exc:
-            raise OutputFailed(os_error_text(self.status_path, exc)) from None
-        for stale in self.out.glob(".status-*.npz"):  # the remains of saves killed before their manifest
-            with contextlib.suppress(OSError):
-                stale.unlink()
+        """Save everything, the manifest last (:func:`fatline_verify.sweep.state.save`)."""
+        self.doing.set("saving")
+        state.save(self)
 
     # --- the loop --------------------------------------------------------------------------------
     def open_count(self) -> int:
         return sum(int((s == OPEN).sum()) for s in self.status.values())
+
+    def judgements(self) -> int:
+        """Combinations times lemmas: what the sweep judges in all."""
+        return sum(s.size for s in self.spaces.values())
 
     def next_combos(self, k: int) -> list[dict[str, int]]:
         """Up to ``k`` distinct combinations open for some lemma: the first open ones of the first lemma
@@ -327,24 +163,28 @@ class Sweep:
         return self.space.reading_indices(self.space.base.options)
 
     def absorb(self, found: Found) -> list[str]:
-        """Close what a check found: the combinations its witnesses refute (a lemma already refuted
-        here keeps its earlier counterexamples), and, for each lemma it did not refute, every open
-        combination that explores the same graph. Returns one line per change."""
+        """Close everything a check found (every lemma's step, then its record). Returns one line per change."""
         lines = []
-        kept: dict[Lemma, int] = {}
         for lemma in self.lemmas:
-            space, status = self.spaces[lemma], self.status[lemma]
-            here = space.index(found.combo)
-            if status[here] != OPEN:
-                continue
-            verdict = found.verdicts.get(lemma, Verdict.INCONCLUSIVE)
-            doc = found.witnesses.get(lemma)
-            if verdict is Verdict.VIOLATED and doc is not None:
-                lines.append(self._cover(lemma, doc, found.combo))
-            else:
-                kept[lemma] = HOLDS if verdict is Verdict.HOLDS_WITHIN_BOUNDS else INCONCLUSIVE
-        if kept:
-            lines += self._equivalent(found, kept)
+            lines += self.absorb_lemma(found, lemma)
+        self._record(found)
+        return lines
+
+    def absorb_lemma(self, found: Found, lemma: Lemma) -> list[str]:
+        """One step: close what a check found for ``lemma``: the combinations its witness refutes (a
+        lemma already judged here keeps its earlier verdict), or, if it was not refuted, this one with
+        its verdict and, where it holds, every open combination that cannot tell its reason apart."""
+        space, status = self.spaces[lemma], self.status[lemma]
+        if status[space.index(found.combo)] != OPEN:
+            return []
+        self.doing.set(f"check {len(self.checks) + 1}: closing {lemma.value}")
+        verdict = found.verdicts.get(lemma, Verdict.INCONCLUSIVE)
+        doc = found.witnesses.get(lemma)
+        if verdict is Verdict.VIOLATED and doc is not None:
+            return [self._cover(lemma, doc, found.combo)]
+        return self._equivalent(found, lemma, HOLDS if verdict is Verdict.HOLDS_WITHIN_BOUNDS else INCONCLUSIVE)
+
+    def _record(self, found: Found) -> None:
         self.checks.append(
             {
                 "readings": self.space.text(found.combo),
@@ -352,20 +192,20 @@ class Sweep:
                 "seconds": round(found.seconds, 3),
             }
         )
-        return lines
 
     def _cover(self, lemma: Lemma, doc: dict[str, Any], combo: dict[str, int]) -> str:
         """Replay a new counterexample under every open combination of ``lemma``; close those it refutes."""
         space, status = self.spaces[lemma], self.status[lemma]
-        covered = cover(space, status == OPEN, partial(refutes, doc, lemma))
+        self.doing.set(f"check {len(self.checks) + 1}: replaying the {lemma.value} counterexample", "replays")
+        covered = cover(space, status == OPEN, partial(refutes, doc, lemma), tick=self.doing.tick)
         self.replays += covered.replays
         if not covered.refuted[space.index(combo)]:
             raise AssertionError(f"{lemma.value}: the witness found under {space.text(combo)} does not refute it there")
         newly = int(covered.refuted.sum())
-        status[covered.refuted] = REFUTED
         k = sum(1 for w in self.witnesses if w["lemma"] == lemma.value) + 1
         path = self.trace_path(lemma, k)
         write_json(path, doc)
+        status[covered.refuted] = REFUTED
         self.witnesses.append(
             {
                 "lemma": lemma.value,
@@ -378,37 +218,40 @@ class Sweep:
         )
         return f"{lemma.value}: a counterexample of {len(doc['initial'])} robots refutes {newly:,}"
 
-    def _equivalent(self, found: Found, kept: dict[Lemma, int]) -> list[str]:
-        """Close each lemma of ``kept`` at this combination with its verdict; a lemma that holds also
-        at every open combination whose stopped graph it sees alike (a liveness lemma: that this
-        combination's states trap, :mod:`fatline_verify.sweep.invariant`), and, if it holds even past
-        violations, whose continued graph it sees alike (:mod:`fatline_verify.sweep.equivalent`)."""
-        lines = []
-        for lemma, code in kept.items():
-            space, status = self.spaces[lemma], self.status[lemma]
-            status[space.index(found.combo)] = code
-            if code != HOLDS:
+    def _equivalent(self, found: Found, lemma: Lemma, code: int) -> list[str]:
+        """Close ``lemma`` at this combination with its verdict; if it holds, also at every open
+        combination whose stopped graph it sees alike (a liveness lemma: that this combination's states
+        trap, :mod:`fatline_verify.sweep.invariant`), and, if it holds even past violations, whose
+        continued graph it sees alike (:mod:`fatline_verify.sweep.equivalent`)."""
+        space, status = self.spaces[lemma], self.status[lemma]
+        status[space.index(found.combo)] = code
+        if code != HOLDS:
+            return []
+        # A spread of the open readings' searches covers every stopped graph equal to this one.
+        stopped = self._within_known if lemma in TRAPPED + SPREAD_SAFETY else self._same_exploration
+        closures = [(stopped, found.stopped)] + (
+            [(self._same_exploration, found.explored)] if lemma in found.held else []
+        )
+        closed = 1
+        for closure, explored in closures:
+            if not explored:
                 continue
-            # A spread of the open readings' searches covers every stopped graph equal to this one.
-            stopped = self._within_known if lemma in TRAPPED + SPREAD_SAFETY else same_exploration
-            closures = [(stopped, found.stopped)] + (
-                [(same_exploration, found.explored)] if lemma in found.held else []
-            )
-            closed = 1
-            for closure, explored in closures:
-                if not explored:
-                    continue
-                among = (status == OPEN)[self._projection(lemma)]
-                eq = closure(self.space, among, self.space.model(found.combo), list(explored), lemma)
-                self.replays += eq.replays
-                targets = np.unique(self._projection(lemma)[eq.same])
-                status[targets] = HOLDS
-                closed += len(targets)
-            lines.append(f"{lemma.value}: holds within bounds under {closed:,} readings (one graph)")
-        return lines
+            among = (status == OPEN)[self._projection(lemma)]
+            eq = closure(self.space, among, self.space.model(found.combo), list(explored), lemma)
+            self.replays += eq.replays
+            targets = np.unique(self._projection(lemma)[eq.same])
+            status[targets] = HOLDS
+            closed += len(targets)
+        return [f"{lemma.value}: holds within bounds under {closed:,} readings (one graph)"]
+
+    def _same_exploration(
+        self, space: Space, among: np.ndarray, reference: Any, explored: list[Explored], lemma: Lemma
+    ) -> Equivalence:
+        self.doing.set(f"check {len(self.checks) + 1}: closing {lemma.value} (same graph)", "replays")
+        return same_exploration(space, among, reference, explored, lemma, tick=self.doing.tick, work=self.work)
 
     def _within_known(
-        self, space: Space, among: np.ndarray, reference: Model, explored: list[Explored], lemma: Lemma
+        self, space: Space, among: np.ndarray, reference: Any, explored: list[Explored], lemma: Lemma
     ) -> Equivalence:
         """A spread closure: the combinations whose searches stay in the states every check so far
         expanded (this one's included) and those they meet, with no deadlock (:func:`within_known`), or
@@ -418,12 +261,22 @@ class Sweep:
         (:func:`trapped`: its own rank, where the shared one has no room)."""
         for ex in explored:
             where = (ex.n, ex.bound, ex.window)
-            old = self._known.get(where)
-            self._known[where] = np.union1d(ex.expanded if old is None else old, ex.expanded)
-        known = [Trap(n, bound, window, keys) for (n, bound, window), keys in sorted(self._known.items())]
+            old = self.known.get(where)
+            self.known[where] = np.union1d(ex.expanded if old is None else old, ex.expanded)
+        known = [Trap(n, bound, window, keys) for (n, bound, window), keys in sorted(self.known.items())]
+        budget = self.max_memory // SPREAD_SHARE
+        start = self._memo.replays
+        self.doing.set(
+            f"check {len(self.checks) + 1}: closing {lemma.value} (spread)",
+            "states spread",
+            lambda: self._memo.replays - start,
+        )
+        tick = self.doing.tick
         if lemma is not Lemma.TERMINATION:
-            return within_known(space, among, known, self._memo, grow=GROW, lemma=lemma)
-        shared = spread_termination(space, among, known, self._memo, GROW)
+            return within_known(
+                space, among, known, self._memo, grow=GROW, lemma=lemma, budget=budget, tick=tick, work=self.work
+            )
+        shared = spread_termination(space, among, known, self._memo, GROW, budget=budget, tick=tick, work=self.work)
         own = trapped(space, among & ~shared.same, reference, explored, lemma, self._memo)
         return Equivalence(shared.same | own.same, shared.replays + own.replays)
 
@@ -442,38 +295,86 @@ class Sweep:
         workers: int = 1,
         cluster: str | None = None,
         progress: Callable[[str], None] | None = None,
+        deadline: float | None = None,
     ) -> bool:
-        """Check and cover until nothing is open (``True``) or ``max_checks`` more checks were made.
-        Checks run ``workers`` at a time on a local Dask cluster, or on the Dask scheduler at
-        ``cluster``; covering runs here, and every finished check is saved before the next."""
-        for found in self._checks(max_checks, workers, cluster):
-            for line in self.absorb(found):
-                if progress:
-                    progress(line)
-            self.save()
-            if progress:
-                progress(f"{len(self.checks)} checks, {self.open_count():,} combinations open")
+        """Check and close, step by step, until nothing is open (``True``), ``max_checks`` more checks
+        were picked, or the clock (``time.monotonic()``) passed ``deadline`` between two steps (a run
+        makes one step at least, and each check closes one step at least: every run gets on). Checks
+        run ``workers`` at a time on a local Dask cluster, or on the Dask scheduler at ``cluster``;
+        closing runs here, and every step is saved before the next. ``progress`` hears one line per
+        change."""
+        left = max_checks
+        steps = 0
+
+        def late() -> bool:  # never before the first step: every run gets on
+            return steps > 0 and deadline is not None and time.monotonic() >= deadline
+
+        with contextlib.ExitStack() as stack:
+            dask: Any = None
+            while True:
+                if not self.pending:
+                    if (left is not None and left <= 0) or late():
+                        break
+                    combos = self.next_combos(max(workers, 1) if left is None else min(max(workers, 1), left))
+                    if not combos:
+                        break
+                    self.pending, self.absorbed = combos, []
+                    if left is not None:
+                        left -= len(combos)
+                elif late():
+                    break
+                if dask is None and (workers > 1 or cluster is not None) and len(self.pending) > 1:
+                    from ..check.workers import Cluster
+
+                    dask = stack.enter_context(Cluster(workers, cluster)).client
+                first = True
+                for found in self._checks(list(self.pending), dask):
+                    for lemma in self.lemmas:
+                        if lemma in self.absorbed:
+                            continue
+                        if late() and not first:
+                            return self.open_count() == 0
+                        first = False
+                        lines = self.absorb_lemma(found, lemma)
+                        self.absorbed.append(lemma)
+                        self.save()
+                        steps += 1
+                        for line in lines if progress else ():
+                            progress(line)  # type: ignore[misc]
+                    self._record(found)
+                    self.pending, self.absorbed = self.pending[1:], []
+                    self.save()
+                    if progress:
+                        progress(f"{len(self.checks)} checks, {self.open_count():,} combinations open")
         return self.open_count() == 0
 
-    def _checks(self, max_checks: int | None, workers: int, cluster: str | None) -> Iterator[Found]:
-        from ..check.workers import Cluster
+    def _checks(self, combos: list[dict[str, int]], dask: Any) -> Iterator[Found]:
+        """The checks of ``combos``, in order: here one by one, or all at once on ``dask``."""
+        if dask is None or len(combos) == 1:
+            for combo in combos:
+                self.doing.set(f"check {len(self.checks) + 1}: {self._short(combo)}")
+                yield check_combo(self.space.model(combo), self._check_bounds(), combo, self._say)
+            return
+        self.doing.set(f"checks {len(self.checks) + 1}..{len(self.checks) + len(combos)} on the workers")
+        jobs = [(self.space.model(c), self._check_bounds(), c) for c in combos]
+        yield from dask.gather(dask.map(check_job, jobs, pure=False))
 
-        left = max_checks
-        with contextlib.ExitStack() as stack:
-            dask = None
-            if workers > 1 or cluster is not None:
-                dask = stack.enter_context(Cluster(workers, cluster)).client
-            while left is None or left > 0:
-                combos = self.next_combos(max(workers, 1) if left is None else min(max(workers, 1), left))
-                if not combos:
-                    return
-                jobs = [(self.space.model(c), self.bounds, c) for c in combos]
-                if dask is None:
-                    yield from map(_check_job, jobs)
-                else:
-                    yield from dask.gather(dask.map(_check_job, jobs, pure=False))  # type: ignore[no-untyped-call]
-                if left is not None:
-                    left -= len(combos)
+    def _check_bounds(self) -> SweepBounds:
+        if not self.max_memory:
+            return self.bounds
+        return SweepBounds(
+            self.bounds.robots, self.bounds.window, self.bounds.engine, self.bounds.max_states, self.bounds.bound,
+            self.max_memory // CHECK_SHARE,
+        )  # fmt: skip
+
+    def _say(self, text: str) -> None:
+        self.doing.what = f"check {len(self.checks) + 1}: {text}"
+
+    def _short(self, combo: dict[str, int]) -> str:
+        """The readings of ``combo`` that differ from the model's (or "the model's readings")."""
+        base = self._base_combo()
+        differ = {name: text for name, text in self.space.text(combo).items() if combo[name] != base[name]}
+        return ", ".join(f"{k}={v}" for k, v in differ.items()) or "the model's readings"
 
     # --- results ---------------------------------------------------------------------------------
     def lemma_summary(self, lemma: Lemma) -> dict[str, Any]:
@@ -492,7 +393,7 @@ class Sweep:
         }
 
     def to_json(self) -> dict[str, Any]:
-        return {
+        out = {
             "format": FORMAT,
             "version": VERSION,
             "fingerprint": self.fingerprint(),
@@ -504,51 +405,6 @@ class Sweep:
             "checks": self.checks,
             "replays": self.replays,
         }
-
-
-def sweep_lines(sweep: Sweep) -> list[str]:
-    """What ``fatline sweep`` prints: per lemma the headline, then the table and the witnesses."""
-    b = sweep.bounds
-    lo, hi = b.robots
-    robots = str(lo) if lo == hi else f"{lo}..{hi}"
-    lines = [
-        f"sweep of {sweep.space.base.describe()}",
-        f"varied: {', '.join(sweep.space.names)}; each combination checked at robots {robots}, "
-        f"window {b.window[0]}x{b.window[1]}" + (f", bound {b.bound[0]}x{b.bound[1]}" if b.bound else ""),
-        "",
-    ]
-    rows = [("lemma", "readings", "refuted", "holds", "inconclusive", "open", "counterexamples")]
-    for lemma in sweep.lemmas:
-        s = sweep.lemma_summary(lemma)
-        rows.append((lemma.value, f"{s['combinations']:,}", f"{s['refuted']:,}", f"{s['holds']:,}",
-                     f"{s['inconclusive']:,}", f"{s['open']:,}", str(s["counterexamples"])))  # fmt: skip
-    widths = [max(len(r[k]) for r in rows) for k in range(len(rows[0]))]
-    for r in rows:
-        lines.append(
-            "  ".join(c.ljust(w) if k == 0 else c.rjust(w) for k, (c, w) in enumerate(zip(r, widths, strict=True)))
-        )
-    lines.append("")
-    for lemma in sweep.lemmas:
-        lines.append(headline(sweep, lemma))
-    lines.append("")
-    lines.append(f"{len(sweep.checks)} checks, {sweep.replays:,} replays; results in {sweep.json_path}")
-    return lines
-
-
-def headline(sweep: Sweep, lemma: Lemma) -> str:
-    """One sentence: refuted under every reading by k counterexamples, or where it survives."""
-    s = sweep.lemma_summary(lemma)
-    n, k = s["combinations"], s["counterexamples"]
-    by = f"by {k} counterexample{'s' if k != 1 else ''}"
-    if s["refuted"] == n:
-        return f"{lemma.value}: refuted under all {n:,} readings {by}"
-    parts = []
-    if s["holds"]:
-        parts.append(f"holds within bounds under {s['holds']:,}")
-    if s["inconclusive"]:
-        parts.append(f"inconclusive under {s['inconclusive']:,}")
-    if s["refuted"]:
-        parts.append(f"refuted under {s['refuted']:,} {by}")
-    if s["open"]:
-        parts.append(f"{s['open']:,} not judged yet (rerun to go on)")
-    return f"{lemma.value}: of {n:,} readings, " + "; ".join(parts)
+        if self.pending:
+            out["pending"] = {"combos": self.pending, "absorbed": [lemma.value for lemma in self.absorbed]}
+        return out

@@ -84,8 +84,14 @@ class Space:
         """``(size, len(names))`` int8: every combination's reading index per option."""
         if not self.names:
             return np.zeros((1, 0), dtype=np.int8)
-        grids = np.unravel_index(np.arange(self.size, dtype=np.int64), self.sizes)
-        return np.stack(grids, axis=1).astype(np.int8)
+        out = np.empty((self.size, len(self.names)), dtype=np.int8)
+        for k, size in enumerate(self.sizes):  # mixed radix, built in int8 (no wide temporaries)
+            above, below = (
+                int(np.prod(self.sizes[:k], dtype=np.int64)),
+                int(np.prod(self.sizes[k + 1 :], dtype=np.int64)),
+            )
+            out[:, k] = np.tile(np.repeat(np.arange(size, dtype=np.int8), below), above)
+        return out
 
     def combo(self, index: int) -> dict[str, int]:
         """Reading index per varied option of combination ``index``."""

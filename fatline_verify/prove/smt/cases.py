@@ -207,11 +207,19 @@ class Decided:
 
 
 def decide_case(
-    ar: Arith, model: Model, case: Case, me: Pt, roles: dict[str, Pt], universe: Sequence[Pt]
+    ar: Arith,
+    model: Model,
+    case: Case,
+    me: Pt,
+    roles: dict[str, Pt],
+    universe: Sequence[Pt],
+    universals: bool = True,
 ) -> tuple[list[z3.BoolRef], Pt]:
     """Constraints under which the robot at ``me`` makes ``case``'s decision, and its destination
     (relative to ``me``). ``roles`` must hold every name of :func:`role_names`; ``universe`` is every
-    robot of the obligation (``me`` may be in it: it is skipped by position)."""
+    robot of the obligation (``me`` may be in it: it is skipped by position). ``universals=False``
+    leaves out the case's universal conditions (over every robot seen): only the witnesses and how the
+    destination is built from them remain (:mod:`fatline_verify.prove.basis`: an *immediate* claim)."""
     opts = model.options
     u = ar.num
     zero = u(0)
@@ -229,13 +237,15 @@ def decide_case(
         return rel(p)
 
     def universal(cond: object) -> None:
+        if not universals:
+            return
         for p in universe:
             out.append(z3.Or(same(p, me), z3.Implies(visible(p), cond(rel(p), bands(ar, model, rel(p))))))  # type: ignore[operator]
 
     rule = case.rule
     if case.branch is None:  # NoMovement
         if rule is Rule.ALONE:
-            for p in universe:
+            for p in universe if universals else ():
                 out.append(z3.Or(same(p, me), z3.Not(visible(p))))
         elif rule is Rule.F_NONEMPTY:
             p = rel(roles["f"])
@@ -366,7 +376,14 @@ def _on_path(ar: Arith, model: Model, y: Term) -> Callable[[Pt], z3.BoolRef]:
 
 
 def decide_group(
-    ar: Arith, model: Model, cases: Sequence[Case], me: Pt, roles: dict[str, Pt], universe: Sequence[Pt], tag: str
+    ar: Arith,
+    model: Model,
+    cases: Sequence[Case],
+    me: Pt,
+    roles: dict[str, Pt],
+    universe: Sequence[Pt],
+    tag: str,
+    universals: bool = True,
 ) -> Decided:
     """The decider makes the decision of one of ``cases`` (a disjunction; the cases of one model
     are disjoint, so at most one holds). The destination and corner are absolute."""
@@ -374,7 +391,7 @@ def decide_group(
     selectors = [z3.Bool(f"{tag}.case{i}", ar.ctx) for i in range(len(cases))]
     dests: list[Pt] = []
     for sel, case in zip(selectors, cases, strict=True):
-        cs, dest = decide_case(ar, model, case, me, roles, universe)
+        cs, dest = decide_case(ar, model, case, me, roles, universe, universals)
         constraints.append(z3.Implies(sel, z3.And(*cs)))
         dests.append(dest)
     constraints.append(ar.any(selectors))

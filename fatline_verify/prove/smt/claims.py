@@ -11,6 +11,9 @@ An obligation asks z3 for a configuration in which r (at the origin) makes the d
   the cases of one rule from the same snapshot, with its own witnesses. Claims: ``no-collision``
   (the two movers come within 2, per ``timing``), ``connectivity`` (they saw each other and do not).
 - ``seen`` (``rma-fixed``): r's destination is right of r and of every robot r sees.
+- ``on-rma`` (``rma-fixed``, the other half of Lemma 3: "a robot on the RMA never leaves it"): no
+  named robot is right of r (r is on the right-most axis of any swarm they are part of), and r's
+  destination has another x.
 - ``x-nondecreasing`` (``approach``): r's destination has a smaller x.
 - ``closer`` (``connectivity``, Lemma 1's argument): some robot of B u C u D that r sees is not
   closer to r's destination than to r.
@@ -48,6 +51,7 @@ class NotEncoded(Exception):
 ONE_MOVER = "one-mover"
 TWO_MOVERS = "two-movers"
 SEEN = "seen"
+ON_RMA = "on-rma"
 X_NONDECREASING = "x-nondecreasing"
 CLOSER = "closer"
 GLOBAL = "global"
@@ -58,6 +62,7 @@ CLAIM = {
     (Lemma.NO_COLLISION, TWO_MOVERS): "a robot s moving in the same round never comes within distance 2 of r",
     (Lemma.CONNECTIVITY, TWO_MOVERS): "a robot s moving in the same round that r saw stays visible to r",
     (Lemma.RMA_FIXED, SEEN): "r does not move right of every robot it sees (and of itself)",
+    (Lemma.RMA_FIXED, ON_RMA): "r, on the right-most axis (no robot right of it), keeps its x (never leaves the axis)",
     (Lemma.APPROACH, X_NONDECREASING): "r's move does not decrease its x",
     (Lemma.CONNECTIVITY, CLOSER): "after the move r is strictly closer to every robot of B u C u D it sees (Lemma 1)",
 }
@@ -74,6 +79,8 @@ class Spec:
     mine: tuple[Case, ...]
     other: tuple[Case, ...] = ()
     other_name: str = ""
+    repair: str = ""
+    """A repaired rule set's own destination in r's case (:data:`REPAIRS`), or ``""``: the paper's."""
 
     @classmethod
     def of(cls, lemma: Lemma, form: str, case: Case, other: tuple[Case, ...] = (), other_name: str = "") -> Spec:
@@ -81,8 +88,9 @@ class Spec:
 
     @property
     def name(self) -> str:
-        """r's case name, or its rule for a group."""
-        return self.mine[0].name if len(self.mine) == 1 else self.mine[0].rule.value
+        """r's case name, or its rule for a group; ``repair-NAME.CASE`` for a repair's destination."""
+        base = self.mine[0].name if len(self.mine) == 1 else self.mine[0].rule.value
+        return f"repair-{self.repair}.{base}" if self.repair else base
 
     @property
     def key(self) -> str:
@@ -93,6 +101,16 @@ class Spec:
     @property
     def claim(self) -> str:
         return CLAIM[(self.lemma, self.form)]
+
+
+REPAIRS = {
+    "align": "repair_stack = align: r, seeing only A u I, moves to the greatest x it sees, if right of r",
+    "approach": "repair_approach = on: in Scenario 4, r moves to 2 radii short of psi_right, if right of r",
+    "contract": "repair_stack = align: the top or bottom of a vertical, seeing only A u I, moves along its vertical",
+}
+"""The repaired rule set's own destinations (:mod:`fatline_verify.rules.repaired.algorithm`), each encoded in
+the paper case it replaces (only-AI, Scenario 4), so that the facts the leg argument and Lemma 3 take from
+the destinations (``x-nondecreasing``, ``seen``, ``on-rma``) are obligations for them too."""
 
 
 @dataclass
@@ -205,14 +223,21 @@ def lattice_extent(model: Model) -> Fraction:
     return 3 * view_reach(model) + 6
 
 
-def build(ar: Arith, model: Model, spec: Spec, *, initial: bool = False, vacuity: bool = False) -> Built:
+def build(
+    ar: Arith, model: Model, spec: Spec, *, initial: bool = False, vacuity: bool = False, immediate: bool = False
+) -> Built:
     """The obligation ``spec`` over ``ar``'s domain. ``initial`` (lattice searches) adds the paper's
     initial condition on the named robots (pairwise distance >= delta, connected); the replay checks
-    it again. ``vacuity`` keeps only "r (and s) make their decisions": unsat means the case never fires."""
+    it again. ``vacuity`` keeps only "r (and s) make their decisions": unsat means the case never fires.
+    ``immediate`` leaves out every decider's universal conditions (the claim's premises only: the
+    witnesses, the destination built from them, disjoint discs): unsat means the claim follows from
+    the rule's construction (:mod:`fatline_verify.prove.basis`)."""
     scheduler = model.options.scheduler
     form = spec.form
     r = ar.origin()
     r_roles = roles_for(ar, spec.mine, model, "r")
+    if spec.repair == "align":
+        r_roles["m"] = ar.point("r.m")  # the robot of greatest x that r sees
     bodies: dict[str, Pt] = {"r": r, **{f"r.{k}": v for k, v in r_roles.items()}}
     groups: list[tuple[Pt, dict[str, Pt]]] = [(r, r_roles)]
     must_differ = set()
@@ -240,14 +265,16 @@ def build(ar: Arith, model: Model, spec: Spec, *, initial: bool = False, vacuity
         for b in names[i + 1 :]:
             sep = apart(ar, model, bodies[a], bodies[b])
             asserts.append(sep if (a, b) in must_differ else z3.Or(same(bodies[a], bodies[b]), sep))
-    dr = decide_group(ar, model, spec.mine, r, r_roles, universe, "r")
+    dr = decide_group(ar, model, spec.mine, r, r_roles, universe, "r", not immediate)
+    if spec.repair:
+        dr = _repaired(ar, model, spec.repair, r, r_roles, universe, dr, not immediate)
     asserts += dr.constraints
     ds: Decided | None = None
     if s is not None:
-        ds = decide_group(ar, model, spec.other, s, other_roles, universe, "s")
+        ds = decide_group(ar, model, spec.other, s, other_roles, universe, "s", not immediate)
         asserts += ds.constraints
     elif o is not None and form == ONE_MOVER and scheduler is Scheduler.FSYNC:
-        asserts += decide_group(ar, model, spec.other, o, other_roles, universe, "o").constraints
+        asserts += decide_group(ar, model, spec.other, o, other_roles, universe, "o", not immediate).constraints
     focus = "s" if s is not None else "o" if o is not None else ""
     bounds: list[z3.BoolRef] = []
     if ar.lattice:
@@ -261,6 +288,44 @@ def build(ar: Arith, model: Model, spec: Spec, *, initial: bool = False, vacuity
         return Built(ar, asserts, bodies, focus, bounds=bounds)
     asserts.append(_violation(ar, model, spec, r, dr, s, ds, o, bodies))
     return Built(ar, asserts, bodies, focus, bounds=bounds)
+
+
+def _repaired(
+    ar: Arith, model: Model, repair: str, r: Pt, roles: dict[str, Pt], universe: list[Pt], dr: Decided, universals: bool
+) -> Decided:
+    """r's paper decision ``dr`` replaced by the repair's destination (:data:`REPAIRS`), with the repair's
+    own conditions: ``align``: a witness m that r sees, right of r, and (universal) no robot r sees right
+    of m; ``approach``: psi_right (from the case's witness w) more than 2 radii right of r; ``contract``:
+    any step along r's vertical of at most one radius."""
+    from ...model.options import PsiRight
+
+    zero = ar.num(0)
+    cons = list(dr.constraints)
+    if repair == "align":
+        m = roles["m"]
+        cons += [z3.Not(same(m, r)), sees(ar, model, r, m), m[0] > r[0]]
+        if universals:
+            cons += [z3.Or(same(p, r), z3.Not(sees(ar, model, r, p)), p[0] <= m[0]) for p in universe]
+        dest = (m[0], r[1])
+    elif repair == "approach":
+        psi = roles["w"][0] - r[0]
+        if model.options.psi_right is not PsiRight.CENTRE_LINE:
+            psi = psi - ar.num(1)
+        x = psi - ar.num(2)
+        cons.append(x > zero)
+        dest = (r[0] + x, r[1])
+    elif repair == "contract":
+        step = ar.var("r.contract")
+        cons += [step != zero, step <= ar.num(1), step >= -ar.num(1)]
+        dest = (r[0], r[1] + step)
+    else:
+        raise NotEncoded(f"repair {repair!r}: expected one of {', '.join(REPAIRS)}")
+    corner: Pt | None = None
+    if model.options.path is PathShape.HORIZONTAL_THEN_VERTICAL:
+        corner = (dest[0], r[1])
+    elif model.options.path is PathShape.VERTICAL_THEN_HORIZONTAL:
+        corner = (r[0], dest[1])
+    return Decided(cons, dest, corner, dr.selectors)
 
 
 def _violation(
@@ -289,6 +354,9 @@ def _violation(
         others = [p for name, p in bodies.items() if name != "r"]
         right = [z3.Or(same(p, r), z3.Not(sees(ar, model, r, p)), p[0] < dr.dest[0]) for p in others]
         return z3.And(dr.dest[0] > r[0], *right)
+    if form == ON_RMA:
+        others = [p for name, p in bodies.items() if name != "r"]
+        return z3.And(*[p[0] <= r[0] for p in others], dr.dest[0] != r[0])
     if form == X_NONDECREASING:
         return dr.dest[0] < r[0]
     if form == CLOSER:
@@ -336,6 +404,11 @@ def argument(model: Model, spec: Spec, built: Built) -> str:
         + f"; model {model.name}, scheduler {model.options.scheduler}.",
         f"Claim: whenever r decides this case, {spec.claim}.",
     ]
+    if spec.repair:
+        lines.append(
+            f"r's destination is the repaired rule set's own, in place of the case's: {REPAIRS[spec.repair]} "
+            "(fatline_verify/rules/repaired/algorithm.py); its conditions are asserted with the case's."
+        )
     if len(spec.mine) == 1:
         lines.append("r's case: " + "; ".join(describe(spec.mine[0], model)) + ".")
     else:

@@ -55,8 +55,8 @@ RIGHTWARD = (
     "a horizontal leg goes right: it is one radius or less toward the paper's destination, whose x never "
     "decreases (the approach obligations of the same run: x-nondecreasing for every case of the paper's rules "
     "under these readings), or toward the repairs' own (repair-align: the greatest x r sees, right of r; "
-    "repair-approach: 2 radii short of psi_right, used only if right of r; repair-detour, when on: toward a "
-    "destination right of r, or at most to the greatest x r sees)"
+    "repair-approach: 2 radii short of psi_right, used only if right of r: their x-nondecreasing-repair-* "
+    "obligations; repair-detour, when on: toward a destination right of r, or at most to the greatest x r sees)"
 )
 """Why the ``horizontal`` class has ``dx > 0``: the one fact the leg obligations take from the rules."""
 
@@ -199,8 +199,11 @@ def _movers_close(ar: Arith, model: Model, r: Mover, o: Mover) -> z3.BoolRef:
     return segment_close(ar, model, ar.origin(), d0, d1)
 
 
-def build(ar: Arith, model: Model, spec: LegSpec, *, vacuity: bool = False) -> Built:
-    """The obligation ``spec`` over ``ar``'s domain; ``vacuity`` keeps only "the legs occur together"."""
+def build(ar: Arith, model: Model, spec: LegSpec, *, vacuity: bool = False, immediate: bool = False) -> Built:
+    """The obligation ``spec`` over ``ar``'s domain; ``vacuity`` keeps only "the legs occur together";
+    ``immediate`` leaves out each mover's conditions on the robots it sees (``repairs.allowed``), keeping
+    the legs' shapes and the form's own test (kept, bridged): unsat means the claim follows from the test
+    that let the move be made (:mod:`fatline_verify.prove.basis`)."""
     r, asserts = mover(ar, "r", spec.mine, ar.origin())
     o_at = ar.point("o")
     bodies: dict[str, Pt] = {"r": r.at, "o": o_at}
@@ -216,7 +219,7 @@ def build(ar: Arith, model: Model, spec: LegSpec, *, vacuity: bool = False) -> B
     names = list(bodies)
     for i, a in enumerate(names):
         asserts += [apart(ar, model, bodies[a], bodies[b]) for b in names[i + 1 :]]
-    for m in movers:
+    for m in movers if not immediate else ():
         asserts += [conditions(ar, model, m, p) for p in bodies.values() if p is not m.at]
     if spec.form == KEPT:
         asserts += [sees(ar, model, r.at, o_at), kept(ar, model, r, o_at)]

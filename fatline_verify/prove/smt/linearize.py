@@ -295,26 +295,41 @@ class Linearization:
         relaxed, self.atoms = relaxed_atoms(built)
         self.solver = z3.Solver(ctx=ctx)
         self.solver.add(*relaxed)
+        self.relaxed = relaxed
         self.discs = [d for atom, b in self.atoms if (d := disc(atom, b)) is not None]
+        self.cut_log: list[tuple[z3.BoolRef, z3.BoolRef]] = []
+        """Every cut asserted so far, with the relaxed Boolean whose disc it bounds (the certificate's marks)."""
         for d in self.discs:
-            self.solver.add(*d.cuts(ctx))
+            self._cut(d, d.cuts(ctx))
         self.refinements = 0
         self._names: dict[int, frozenset[str]] = {}
         self._polished: dict[frozenset[str], int] = {}
         """How many polishes solved for each set of unknowns (at most :data:`POLISH_REPEATS`)."""
 
+    def _cut(self, d: Disc, cuts: list[z3.BoolRef]) -> None:
+        self.solver.add(*cuts)
+        self.cut_log += [(d.boolean, c) for c in cuts]
+
     def script(self) -> str:
         """The linear problem as it stands (the relaxed obligation and every cut so far), as SMT-LIB2:
-        after ``unsat``, the certificate another solver confirms."""
+        after ``unsat``, the certificate another solver confirms. It records, beside every relaxed
+        Boolean, the atom it stands for (``; atom NAME SEXPR``), and marks each cut with the Boolean whose
+        disc it bounds (``; cut NAME`` before its ``assert``), so that
+        :mod:`fatline_verify.prove.smt.certificates` re-derives from the obligation's file alone that every
+        cut is implied (:data:`CERTIFICATE_FORMAT`)."""
         plain = z3.Solver(ctx=self.built.ar.ctx)
-        plain.add(*self.solver.assertions())
+        plain.add(*self.relaxed)
         header = (
             "; The linearization of the obligation in the file of the same name without '.linear': each nonlinear\n"
             "; comparison a Boolean, each squared distance's Boolean implying exact tangent lines (inside) or one of\n"
             "; a grid's sector half-planes (outside), which every solution of the obligation satisfies. Unsat here\n"
-            "; is unsat there.\n"
+            "; is unsat there. Check it from the two files alone: python -m fatline_verify.prove.certify DIR\n"
+            f"; {CERTIFICATE_FORMAT}\n"
+            f"; relaxed assertions: {len(self.relaxed)}; cuts: {len(self.cut_log)}\n"
         )
-        return f"{header}(set-logic QF_LRA)\n{plain.sexpr()}(check-sat)\n"
+        atoms = "".join(f"; atom {b.decl().name()} {_one_line(atom)}\n" for atom, b in self.atoms)
+        cuts = "".join(f"; cut {b.decl().name()}\n(assert {_one_line(c)})\n" for b, c in self.cut_log)
+        return f"{header}{atoms}(set-logic QF_LRA)\n{plain.sexpr()}{cuts}(check-sat)\n"
 
     def check(self, seconds: float) -> Answer:
         """Refine until ``unsat``, a solution of the obligation, or ``seconds`` of budget are spent."""
@@ -343,16 +358,19 @@ class Linearization:
             left -= spent(self.solver, self.built)
             if polished is not None:
                 return decode(polished, self.built, time.perf_counter() - t0, min(seconds, seconds - left))
-            cuts = []
+            cuts: list[tuple[Disc, list[z3.BoolRef]]] = []
             for d in self.discs:
                 p = (exact_value(m.eval(d.terms[0], True))[0], exact_value(m.eval(d.terms[1], True))[0])
                 said = z3.is_true(m.eval(d.inside(), True))
                 if said != d.is_inside(p):
-                    cuts += d.refine(p, said, ctx)
+                    more = d.refine(p, said, ctx)
+                    if more:
+                        cuts.append((d, more))
             if not cuts:
                 return Answer("unknown", time.perf_counter() - t0, STUCK, budget=seconds - left)
             self.refinements += 1
-            self.solver.add(*cuts)
+            for d, more in cuts:
+                self._cut(d, more)
         return Answer("unknown", time.perf_counter() - t0, unknown_reason(self.solver, seconds), budget=seconds)
 
     def _unknowns(self, e: z3.ExprRef) -> frozenset[str]:
@@ -388,6 +406,18 @@ class Linearization:
                 if z3.is_const(v) and v.decl().name() not in free and not z3.is_rational_value(v):
                     solver.add(v == m.eval(v, model_completion=True))
         return solver.model() if solver.check() == z3.sat else None
+
+
+CERTIFICATE_FORMAT = (
+    "format fatline-certificate 1: '; atom NAME SEXPR' gives the comparison the Boolean NAME stands for; the first "
+    "'relaxed assertions' asserts are the obligation's, each comparison by its Boolean; each later assert, after "
+    "'; cut NAME', is a cut implied by NAME's comparison"
+)
+"""The header line that says how a ``.linear.smt2`` file records its atoms and cuts."""
+
+
+def _one_line(e: z3.ExprRef) -> str:
+    return " ".join(e.sexpr().split())
 
 
 def certificate(path: Path, seconds: float = 30.0) -> str | None:

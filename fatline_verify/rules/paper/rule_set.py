@@ -1,8 +1,7 @@
 """The paper rule set's registration: its options, decision function and prover encoding."""
 
-
 from ...model.options import CATALOGUE
-from ..registry import MODEL_OPTIONS, RuleSet, register
+from ..registry import MODEL_OPTIONS, Liveness, RuleSet, register
 from .algorithm import decide
 
 READINGS = frozenset(name for name, spec in CATALOGUE.items() if not spec.repair) - MODEL_OPTIONS
@@ -16,5 +15,14 @@ PAPER = register(
         options=READINGS,
         prover="paper",
         bands=True,
+        liveness=Liveness(
+            "fatline_verify.prove.smt.live_rules:paper_cases",
+            ((-1, 0), (0, 1)),
+            "lexicographic (sum of -x, sum of y) over the robots: a move goes right, or stays on its vertical "
+            "and goes down",
+            "sum of -x: bounded below while no robot moves right of every robot it sees (rma-fixed's `seen` "
+            "obligations: the right-most vertical never moves right); sum of y: NOT argued (nothing in the "
+            "paper's rules bounds how far Scenario 4 moves down), so these rows prove the fall only",
+        ),
     )
 )

@@ -271,21 +271,35 @@ def _contract(decision: Decision, snapshot: Sequence[Point], model: Model) -> De
     return Decision(Rule.REPAIR_CONTRACT, end, path, decision.classification)
 
 
+def align_destination(snapshot: Sequence[Point]) -> Point | None:
+    """``repair_stack = align``'s destination for a robot that sees only A u I: the greatest x it sees,
+    if right of it ("r moves right to the greatest x it sees"); else ``None`` (r does not move by it)."""
+    right = max(c[0] for c in snapshot)
+    return (right, 0) if right > 0 else None
+
+
+def approach_destination(decision: Decision, model: Model) -> Point | None:
+    """``repair_approach = on``'s destination for a Scenario 4 decision: 2 radii short of psi_right,
+    if right of r; else ``None`` (Scenario 4 as the paper says)."""
+    assert decision.psi is not None
+    x = decision.psi - 2 * model.radius
+    return (x, 0) if x > 0 else None
+
+
 def repair(decision: Decision, snapshot: Sequence[Point], model: Model) -> Decision:
     """The repaired decision: the paper's ``decision`` if it stays; else held by the lock, or the
     first allowed leg toward its destination, or a stay when no leg is allowed."""
     if decision.rule is Rule.ONLY_AI and model.options.repair_stack is RepairStack.ALIGN:
-        right = max(c[0] for c in snapshot)
-        if right > 0:
-            destination = (right, 0)
+        aligned = align_destination(snapshot)
+        if aligned is not None:
+            destination = aligned
             decision = Decision(
                 Rule.REPAIR_ALIGN, destination, _path(destination, model.options.path), decision.classification
             )
     if decision.rule in SCENARIO_4 and model.options.repair_approach is RepairApproach.ON:
-        assert decision.psi is not None
-        x = decision.psi - 2 * model.radius
-        if x > 0:
-            destination = (x, 0)
+        approached = approach_destination(decision, model)
+        if approached is not None:
+            destination = approached
             decision = replace(
                 decision,
                 rule=Rule.REPAIR_APPROACH,

@@ -1,0 +1,402 @@
+"""Lemma-level verdicts: which obligation forms together imply each lemma (:data:`TABLE`), and the
+verdict the rows of one model's ``results.json`` give it (:func:`lemma_verdicts`).
+
+A lemma is
+
+- **VIOLATED** only when a replayed counterexample breaks the lemma itself: a row of a *refuting*
+  part (a collision; a robot that leaves the right-most axis; the global form's split swarm). A lost
+  edge alone (connectivity's one-mover, two-movers, kept, bridged rows) is not a split swarm, and a
+  move right of every robot r sees does not by itself move the RMA: those VIOLATED rows leave the
+  lemma NOT PROVED, not VIOLATED.
+- **PROVED** only when every part it needs is: each part's rows all PROVED (for every swarm size),
+  and no part rests on a fact by inspection.
+- **NOT PROVED** otherwise, naming the parts proved and the parts missing (not run, violated,
+  inconclusive, by inspection).
+- **NOT ENCODED** when a part has no obligation form at all (approach: "each robot will move closer
+  to RMA in finite time" is liveness; the prover's ``x-nondecreasing`` is a step fact beside it).
+
+The table is a few constructors (:func:`paper_lemma`, :func:`legs_lemma`) over the rules' encodings,
+one entry per lemma and encoding; a liveness lemma joins as an entry whose parts name its forms
+(progress: ``enabled``; termination: ``measure`` and ``enabled``, resting on safety, rigid moves and
+a fair round scheduler); until the prover writes rows of those forms it is NOT ENCODED.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..lemmas.properties import Lemma
+from ..model.config import Model
+from ..model.options import Scheduler
+from ..rules import registry
+from .basis import counts_text
+from .goals import goal_problem
+
+PROVED, VIOLATED, NOT_PROVED, NOT_ENCODED = "PROVED", "VIOLATED", "NOT PROVED", "NOT ENCODED"
+LEMMA_VERDICTS = (VIOLATED, NOT_ENCODED, NOT_PROVED, PROVED)
+"""Lemma-level verdicts, worst first."""
+
+
+def _always(model: Model) -> str:
+    return ""
+
+
+def _two_movers(model: Model) -> str:
+    """Why two movers need no obligation of their own under ``model``'s scheduler, or ``""``."""
+    if model.options.scheduler is Scheduler.CENTRALIZED:
+        return "one robot moves per round (centralized): no two robots move at once"
+    return ""
+
+
+@dataclass(frozen=True)
+class Part:
+    """One part of a lemma's argument: the obligation forms that make it, what it says, whether a
+    replayed counterexample of it breaks the lemma itself."""
+
+    name: str
+    forms: tuple[str, ...]
+    says: str
+    refutes: bool = False
+    needed: Callable[[Model], str] = field(default=_always, compare=False)
+    """``""`` if the model needs the part, else why not (stated on the page)."""
+    inspection: str = ""
+    """A fact the argument uses that no obligation checks (the part is then never PROVED)."""
+    lemma: str = ""
+    """The lemma whose rows hold the forms, if not the entry's own (the legs' rightward: approach's)."""
+    cases: Callable[[Model], tuple[str, ...]] = field(default=lambda model: (), compare=False)
+    """Case-name prefixes the part needs a row of under ``model`` (the repairs' own destinations)."""
+
+
+@dataclass(frozen=True)
+class Entry:
+    """A lemma under one encoding: the parts that together imply it, and the argument that they do."""
+
+    lemma: str
+    encoding: str
+    parts: tuple[Part, ...]
+    argument: str
+    beside: tuple[Part, ...] = ()
+    """Forms shown with the lemma but not part of its argument (Lemma 1's ``closer`` step), or refuting only
+    (the global form: a split swarm, bounded)."""
+
+
+def paper_lemma(lemma: Lemma | str, parts: tuple[Part, ...], argument: str, beside: tuple[Part, ...] = ()) -> Entry:
+    """A lemma over the paper's decision cases (every rule that makes a move, one obligation per case)."""
+    return Entry(str(lemma), "paper", parts, argument, beside)
+
+
+def _repairs(model: Model, *, vertical: bool = True) -> tuple[str, ...]:
+    """The repaired rule set's own destinations ``model`` turns on, as case-name prefixes
+    (:func:`fatline_verify.prove.tasks.repair_cases`); ``vertical=False`` leaves out the contraction,
+    which makes no horizontal leg."""
+    from ..rules.repaired.options import RepairApproach, RepairStack
+
+    out: list[str] = []
+    if model.options.repair_stack is RepairStack.ALIGN:
+        out += ["repair-align."] + (["repair-contract."] if vertical else [])
+    if model.options.repair_approach is RepairApproach.ON:
+        out.append("repair-approach.")
+    return tuple(out)
+
+
+RIGHTWARD = Part(
+    "rightward",
+    ("x-nondecreasing",),
+    "a horizontal leg goes right: no destination decreases x (x-nondecreasing per case, the paper's and the "
+    "repairs' repair-align and repair-approach)",
+    lemma=str(Lemma.APPROACH),
+    cases=lambda model: _repairs(model, vertical=False),
+)
+
+
+def legs_lemma(lemma: Lemma | str, parts: tuple[Part, ...], argument: str) -> Entry:
+    """A lemma of the repaired rule set over its legs, every leg class against rest and every other class;
+    the legs' rightward horizontal is a part of it (:data:`RIGHTWARD`)."""
+    return Entry(str(lemma), "legs", (*parts, RIGHTWARD), argument)
+
+
+ONE_COLLIDE = Part("one-mover", ("one-mover",), "r's move never comes within 2 of a robot at rest", refutes=True)
+TWO_COLLIDE = Part(
+    "two-movers", ("two-movers",), "two robots moving in one round never come within 2", True, _two_movers
+)
+ONE_EDGE = Part("one-mover", ("one-mover",), "every robot at rest that r saw is still in view after r's move")
+TWO_EDGE = Part("two-movers", ("two-movers",), "two movers that saw each other still do", needed=_two_movers)
+SEEN = Part("seen", ("seen",), "no move ends right of r and of every robot r sees, so none beyond the RMA")
+ON_RMA = Part("on-rma", ("on-rma",), "a robot on the RMA never leaves it", refutes=True)
+X_STEP = Part("x-nondecreasing", ("x-nondecreasing",), "no move decreases x (a step fact, not the lemma)")
+REACHES = Part("reaches", (), "each robot moves closer to the RMA in finite time (liveness)")
+
+TABLE: tuple[Entry, ...] = (
+    paper_lemma(
+        Lemma.NO_COLLISION,
+        (ONE_COLLIDE, TWO_COLLIDE),
+        "a collision in a round is between a mover and a robot at rest, or two movers",
+    ),
+    paper_lemma(
+        Lemma.CONNECTIVITY,
+        (ONE_EDGE, TWO_EDGE),
+        "every edge with a mover at one end is kept, so the graph after the round has every edge it had",
+        beside=(
+            Part("global", ("global",), "the whole graph stays connected (bounded slots)", refutes=True),
+            Part("closer", ("closer",), "Lemma 1's inner step: r gets closer to the B u C u D robots it sees"),
+        ),
+    ),
+    paper_lemma(
+        Lemma.RMA_FIXED,
+        (SEEN, ON_RMA),
+        "no robot moves beyond the RMA (seen) and none on it leaves it (on-rma), so the RMA stays",
+    ),
+    paper_lemma(Lemma.APPROACH, (X_STEP, REACHES), "liveness: needs a measure, not a step fact"),
+    legs_lemma(
+        Lemma.NO_COLLISION,
+        (Part("leg", ("leg",), "r's leg against a robot at rest or on any leg: never within 2", refutes=True),),
+        "every collision is between a mover and another robot, at rest or moving by a leg",
+    ),
+    legs_lemma(
+        Lemma.CONNECTIVITY,
+        (
+            Part("kept", ("kept",), "an edge both movers' tests kept stays an edge"),
+            Part("bridged", ("bridged",), "an edge a mover's test bridged is a path of two edges after"),
+        ),
+        "every edge before the round is a path of at most two edges after it",
+    ),
+    Entry(
+        str(Lemma.RMA_FIXED),
+        "legs",
+        (
+            Part("seen", SEEN.forms, SEEN.says, cases=_repairs),
+            Part("on-rma", ON_RMA.forms, ON_RMA.says, refutes=True, cases=_repairs),
+        ),
+        "the paper's destinations and the repairs' own (seen, on-rma per case; repair-align, repair-approach, "
+        "repair-contract among them); a leg goes no farther than its destination",
+    ),
+    Entry(str(Lemma.APPROACH), "legs", (X_STEP, REACHES), "liveness: needs a measure, not a step fact"),
+)
+"""Every lemma under each encoding (``""``: whichever)."""
+
+
+@dataclass(frozen=True)
+class LemmaVerdict:
+    """One lemma's verdict from a model's rows, and why."""
+
+    lemma: str
+    verdict: str
+    why: str
+    rows: int
+    counts: str
+    """Its rows' verdicts, PROVED split by basis (``12 PROVED (1 substantive, 9 immediate, 2 vacuous), 3 VIOLATED``)."""
+
+
+def entry_for(lemma: str, encoding: str) -> Entry | None:
+    for e in TABLE:
+        if e.lemma == lemma and e.encoding in (encoding, ""):
+            return e
+    return None
+
+
+_WHERE = re.compile(r"\s\((?:an earlier|lattice|small swarms|reals|linearization|given|the mirror)[^()]*\)")
+
+
+def _where_dropped(reason: str) -> str:
+    """A VIOLATED row's reason without where its counterexample was found (the row keeps it)."""
+    return _WHERE.sub("", reason)
+
+
+def _count(rows: list[dict[str, Any]]) -> str:
+    verdicts = [r["verdict"] for r in rows]
+    out = []
+    for v in ("PROVED", "VIOLATED", "INCONCLUSIVE", "HOLDS_WITHIN_BOUNDS"):
+        n = verdicts.count(v)
+        if n:
+            out.append(f"{n} {v}" + (f" ({counts_text(rows)})" if v == "PROVED" else ""))
+    return ", ".join(out)
+
+
+def judge(entry: Entry, model: Model, rows: list[dict[str, Any]]) -> LemmaVerdict:
+    """The lemma's verdict from its rows (every row of ``rows`` with its lemma)."""
+    mine = [r for r in rows if r.get("lemma") == entry.lemma]
+    by_form: dict[str, list[dict[str, Any]]] = {}
+    for r in mine:
+        by_form.setdefault(str(r.get("form")), []).append(r)
+
+    def rows_of(part: Part) -> list[dict[str, Any]]:
+        if not part.lemma:
+            return [r for f in part.forms for r in by_form.get(f, [])]
+        return [r for r in rows if r.get("lemma") == part.lemma and r.get("form") in part.forms]
+
+    for part in (*entry.parts, *entry.beside):
+        if not part.refutes:
+            continue
+        for r in rows_of(part):
+            if r["verdict"] == "VIOLATED":
+                case = r.get("case", r.get("rule", ""))
+                return LemmaVerdict(
+                    entry.lemma,
+                    VIOLATED,
+                    f"{part.name} {case}: {_where_dropped(str(r.get('reason', '')))}",
+                    len(mine),
+                    _count(mine),
+                )
+    proved, missing, unencoded, skipped = [], [], [], []
+    for part in entry.parts:
+        why_not = part.needed(model)
+        if why_not:
+            skipped.append(f"{part.name} not needed: {why_not}")
+            continue
+        if not part.forms and part.inspection:
+            missing.append(f"{part.name}: by inspection: {part.inspection}")
+            continue
+        if not part.forms:
+            unencoded.append(f"{part.name} ({part.says}): no obligation form")
+            continue
+        got = rows_of(part)
+        if not got:
+            missing.append(f"{part.name}: no rows (not run)")
+        elif absent := [p for p in part.cases(model) if not any(str(r.get("case", "")).startswith(p) for r in got)]:
+            missing.append(f"{part.name}: no obligation for {', '.join(a.rstrip('.') for a in absent)}")
+        elif any(r["verdict"] != "PROVED" for r in got):
+            bad = [r for r in got if r["verdict"] != "PROVED"]
+            missing.append(f"{part.name}: {len(bad)} of {len(got)} not PROVED ({_count(bad)})")
+        elif part.inspection:
+            proved.append(f"{part.name} ({len(got)} PROVED)")
+            missing.append(f"{part.name}: by inspection: {part.inspection}")
+        else:
+            proved.append(f"{part.name} ({len(got)} PROVED)")
+    if not part_forms_seen(entry, by_form) and not unencoded:
+        return LemmaVerdict(entry.lemma, NOT_ENCODED, "no obligation of its forms in the results", 0, "")
+    notes = "; ".join(skipped)
+    tail = f" ({notes})" if notes else ""
+    if unencoded:
+        done = f"; proved: {', '.join(proved)}" if proved else ""
+        done += f"; missing: {'; '.join(missing)}" if missing else ""
+        return LemmaVerdict(entry.lemma, NOT_ENCODED, "; ".join(unencoded) + done + tail, len(mine), _count(mine))
+    if missing:
+        done = f"proved: {', '.join(proved)}; " if proved else ""
+        return LemmaVerdict(
+            entry.lemma, NOT_PROVED, f"{done}missing: {'; '.join(missing)}{tail}", len(mine), _count(mine)
+        )
+    return LemmaVerdict(entry.lemma, PROVED, f"{entry.argument}: {', '.join(proved)}{tail}", len(mine), _count(mine))
+
+
+def part_forms_seen(entry: Entry, by_form: dict[str, list[dict[str, Any]]]) -> bool:
+    return any(f in by_form for p in (*entry.parts, *entry.beside) for f in p.forms)
+
+
+def encoding_of(model: Model) -> str:
+    """The encoding the prover uses for ``model``: ``legs`` for a repaired rule set, else ``paper``."""
+    return "legs" if model.options.repaired else "paper"
+
+
+LIVENESS = (str(Lemma.PROGRESS), str(Lemma.TERMINATION))
+"""The liveness lemmas: judged by :func:`liveness_verdicts` (their own rules), not by a table entry."""
+
+
+def liveness_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, tuple[str, str]]:
+    """Lemma-level verdicts of progress and termination from the rows of one model (``{}`` for a rule
+    set without a liveness declaration or without liveness rows), each ``(verdict, why)``:
+
+    - progress (Lemma 2): VIOLATED by a replayed stuck configuration (a row VIOLATED); PROVED when every
+      enabledness row is; otherwise NOT PROVED.
+    - termination: VIOLATED only by a replayed stuck configuration (a run that never reaches the goal);
+      a VIOLATED measure row only leaves it NOT PROVED (one round that does not decrease the measure is
+      not a run that never ends). PROVED when progress is, every measure row is PROVED, the bound is
+      argued (:attr:`~fatline_verify.rules.registry.Liveness.bounded_proved`) and every no-collision and
+      connectivity row present is PROVED (the argument assumes a connected swarm that never collides).
+    """
+    from .tasks import row_key, tasks_for
+
+    declared = registry.of(model).liveness
+    if declared is None:
+        return {}
+    by_key = {row_key(r): r for r in rows}
+    expected = [t.key for t in tasks_for(model, (Lemma.PROGRESS, Lemma.TERMINATION))]
+    enabled = [k for k in expected if k.startswith(f"{Lemma.PROGRESS}/")]
+    measure = [k for k in expected if k.startswith(f"{Lemma.TERMINATION}/")]
+    if not any(k in by_key for k in expected):
+        return {}
+
+    def verdicts(keys: list[str]) -> list[str]:
+        return [by_key[k]["verdict"] if k in by_key else "missing" for k in keys]
+
+    def open_text(keys: list[str]) -> str:
+        left = [k.split("/", 1)[1] for k, v in zip(keys, verdicts(keys), strict=True) if v != "PROVED"]
+        return f"{len(left)} of {len(keys)} rows not PROVED ({', '.join(left[:3])}{', ...' if len(left) > 3 else ''})"
+
+    stuck = [k for k, v in zip(enabled, verdicts(enabled), strict=True) if v == "VIOLATED"]
+    out: dict[Lemma, tuple[str, str]] = {}
+    problem = goal_problem(model)
+    if problem:  # no enabledness rows (tasks_for leaves them out): nothing said of progress
+        out[Lemma.PROGRESS] = (NOT_ENCODED, problem)
+        out[Lemma.TERMINATION] = (
+            NOT_PROVED,
+            "progress not encoded for this goal; measure: "
+            + ("every row PROVED" if all(v == "PROVED" for v in verdicts(measure)) else open_text(measure)),
+        )
+        return out
+    if stuck:
+        why = f"a replayed stuck configuration ({stuck[0]})"
+        out[Lemma.PROGRESS] = ("VIOLATED", why)
+        out[Lemma.TERMINATION] = ("VIOLATED", why)
+        return out
+    progress_ok = all(v == "PROVED" for v in verdicts(enabled))
+    out[Lemma.PROGRESS] = (
+        ("PROVED", "every enabledness row PROVED") if progress_ok else ("NOT PROVED", open_text(enabled))
+    )
+    safety = [k for k in by_key if k.split("/", 1)[0] in (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)]
+    missing: list[str] = []
+    if not progress_ok:
+        missing.append("progress not proved")
+    if not all(v == "PROVED" for v in verdicts(measure)):
+        missing.append("measure: " + open_text(measure))
+    if not declared.bounded_proved:
+        missing.append("the measure's bound is not argued")
+    if any(by_key[k]["verdict"] != "PROVED" for k in safety):
+        missing.append("a no-collision or connectivity row is not PROVED")
+    if missing:
+        out[Lemma.TERMINATION] = ("NOT PROVED", "; ".join(missing))
+    else:
+        out[Lemma.TERMINATION] = ("PROVED", "progress, the measure and its bound, no-collision and connectivity")
+    return out
+
+
+def lemma_verdicts(
+    model: Model, rows: list[dict[str, Any]], lemmas: tuple[str, ...] | None = None
+) -> list[LemmaVerdict]:
+    """Every lemma with rows in ``rows`` (or each of ``lemmas``), judged by its table entry."""
+    wanted = lemmas if lemmas is not None else tuple(dict.fromkeys(str(r.get("lemma")) for r in rows))
+    out = []
+    live: dict[Lemma, tuple[str, str]] | None = None
+    for lemma in wanted:
+        if lemma in LIVENESS:
+            live = live if live is not None else liveness_verdicts(model, rows)
+            if Lemma(lemma) in live:
+                verdict, why = live[Lemma(lemma)]
+                mine = [r for r in rows if r.get("lemma") == lemma]
+                out.append(LemmaVerdict(lemma, verdict, why, len(mine), _count(mine)))
+            continue
+        entry = entry_for(lemma, encoding_of(model))
+        if entry is None:
+            continue
+        out.append(judge(entry, model, rows))
+    return out
+
+
+__all__ = [
+    "LEMMA_VERDICTS",
+    "NOT_ENCODED",
+    "NOT_PROVED",
+    "PROVED",
+    "TABLE",
+    "VIOLATED",
+    "Entry",
+    "LemmaVerdict",
+    "Part",
+    "judge",
+    "legs_lemma",
+    "lemma_verdicts",
+    "liveness_verdicts",
+    "paper_lemma",
+]

@@ -1,0 +1,189 @@
+"""What PROVED certifies: Lemma 3's other half (``on-rma``), each PROVED row's basis found by solver
+query (vacuous, immediate, substantive), and lemma-level verdicts from the forms that together imply a
+lemma (:mod:`fatline_verify.prove.coverage`). Everything is proved fresh here, never read from the
+committed ``proofs/``."""
+
+from __future__ import annotations
+
+import pytest
+
+from fatline_verify.lemmas.properties import Lemma, Verdict
+from fatline_verify.model.config import load_model
+from fatline_verify.prove.basis import IMMEDIATE, SUBSTANTIVE, VACUOUS, basis_of, counts_text, decided
+from fatline_verify.prove.coverage import NOT_ENCODED, NOT_PROVED, PROVED, TABLE, VIOLATED, lemma_verdicts
+from fatline_verify.prove.legs import prove_leg
+from fatline_verify.prove.replay import replay_known
+from fatline_verify.prove.search import prove_spec
+from fatline_verify.prove.smt.claims import ON_RMA, SEEN, Spec
+from fatline_verify.prove.smt.legs import LegSpec
+from fatline_verify.prove.tasks import tasks_for
+from fatline_verify.rules.paper.cases import moving_cases
+from fatline_verify.rules.repaired.algorithm import Leg
+from fatline_verify.schedulers.round import decide_all
+
+
+def _spec(model_name: str, form: str, case: str, lemma: Lemma = Lemma.RMA_FIXED) -> Spec:
+    model = load_model(model_name)
+    (c,) = [c for c in moving_cases(model) if c.name == case]
+    return Spec.of(lemma, form, c)
+
+
+def test_on_rma_is_an_obligation_of_every_moving_case():
+    model = load_model("paper")
+    keys = {t.key for t in tasks_for(model, (Lemma.RMA_FIXED,))}
+    for c in moving_cases(model):
+        assert f"rma-fixed/seen-{c.name}" in keys and f"rma-fixed/on-rma-{c.name}" in keys
+
+
+def test_on_rma_finds_the_paper_literal_counterexample_and_the_model_replays_it():
+    """The issue's ``fatline simulate paper-literal --init "0,2 2,0" --schedule "1"``: r, alone on the
+    right-most axis, takes the x of a robot up-left of it as psi_right and leaves the axis."""
+    model = load_model("paper-literal")
+    spec = _spec("paper-literal", ON_RMA, "scenario-1")
+    got = decided(prove_spec, model, spec, timeout=20, out=None, small=False)
+    assert got.verdict is Verdict.VIOLATED and "leaves the axis" in got.reason
+    assert got.basis == ""  # only PROVED rows have a basis
+    again = replay_known(model, spec, {"configuration": list(got.configuration)})
+    assert again is not None and again.initial  # the executable model replays it from an initial configuration
+    # the issue's own configuration breaks the same claim: r = (2, 0) sees (0, 2) and moves to x = 0
+    issue = replay_known(model, spec, {"configuration": ["2,0", "0,2"]})
+    assert issue is not None and "leaves the axis" in issue.what
+    state = ((2, 0), (0, 2))
+    assert decide_all(state, model)[0].destination[0] == -2
+
+
+def test_on_rma_holds_where_quadrants_are_lower_right():
+    """The default readings: B and D are the right quadrants, so psi_right is never left of r; with no
+    robot right of r, Scenario 1 keeps r's x: on-rma is PROVED, and by the witness's construction alone."""
+    model = load_model("paper")
+    got = decided(prove_spec, model, _spec("paper", ON_RMA, "scenario-1"), timeout=20, out=None, small=False)
+    assert got.verdict is Verdict.PROVED and got.basis == IMMEDIATE
+
+
+def test_seen_is_immediate_for_scenario_1():
+    """Scenario 1 moves to psi_right, the x of a robot r sees: the claim needs no universal condition."""
+    model = load_model("paper")
+    got = decided(prove_spec, model, _spec("paper", SEEN, "scenario-1"), timeout=20, out=None, small=False)
+    assert got.verdict is Verdict.PROVED and got.basis == IMMEDIATE
+
+
+def test_a_leg_obligation_that_needs_the_conditions_is_substantive():
+    model = load_model("repaired")
+    spec = LegSpec(Lemma.NO_COLLISION, "leg", Leg.HORIZONTAL, "rest")
+    got = decided(prove_leg, model, spec, timeout=30, out=None)
+    assert got.verdict is Verdict.PROVED and got.basis == SUBSTANTIVE
+    # and the same obligation's kept twin is immediate: its own test says r's end sees o
+    kept = LegSpec(Lemma.CONNECTIVITY, "kept", Leg.HORIZONTAL, "rest")
+    got = decided(prove_leg, model, kept, timeout=30, out=None)
+    assert got.verdict is Verdict.PROVED and got.basis == IMMEDIATE
+
+
+def test_a_row_that_cannot_fire_is_vacuous_however_unsat_was_reached():
+    """A row the search reached by the full obligation is still asked whether it can fire."""
+    from fatline_verify.prove.tasks import ProofResult
+
+    model = load_model("paper-literal")
+    spec = _spec("paper-literal", SEEN, "scenario-3.up-1")
+    reached = ProofResult(Lemma.RMA_FIXED, SEEN, "scenario-3", Verdict.PROVED, 0, True, 0.0, "unsat over the reals", "")
+    assert basis_of(model, spec, reached) == VACUOUS
+    fires = _spec("paper-literal", SEEN, "scenario-1")
+    assert basis_of(model, fires, reached) == IMMEDIATE
+
+
+def _row(lemma: str, form: str, verdict: str, case: str = "c", basis: str = "") -> dict:
+    row = {"lemma": lemma, "form": form, "verdict": verdict, "case": case, "rule": case, "reason": "r"}
+    return {**row, "basis": basis} if basis else row
+
+
+def _verdicts(model_name: str, rows: list[dict]) -> dict[str, object]:
+    return {v.lemma: v for v in lemma_verdicts(load_model(model_name), rows)}
+
+
+def test_a_lost_edge_alone_does_not_refute_connectivity_but_a_split_does():
+    rows = [_row("connectivity", "one-mover", "VIOLATED"), _row("connectivity", "one-mover", "PROVED", "d", VACUOUS)]
+    v = _verdicts("paper", rows)["connectivity"]
+    assert v.verdict == NOT_PROVED and "one-mover: 1 of 2 not PROVED" in v.why and "two-movers: no rows" in v.why
+    rows.append(_row("connectivity", "global", "VIOLATED", "any"))
+    assert _verdicts("paper", rows)["connectivity"].verdict == VIOLATED
+
+
+def test_rma_fixed_is_proved_only_with_on_rma():
+    seen = [_row("rma-fixed", "seen", "PROVED", "a", IMMEDIATE), _row("rma-fixed", "seen", "PROVED", "b", VACUOUS)]
+    v = _verdicts("paper", seen)["rma-fixed"]
+    assert v.verdict == NOT_PROVED and "on-rma: no rows" in v.why
+    on = [_row("rma-fixed", "on-rma", "PROVED", "a", SUBSTANTIVE), _row("rma-fixed", "on-rma", "PROVED", "b", VACUOUS)]
+    v = _verdicts("paper", seen + on)["rma-fixed"]
+    assert v.verdict == PROVED and v.counts == "4 PROVED (1 substantive, 1 immediate, 2 vacuous)"
+    broken = [*seen, _row("rma-fixed", "on-rma", "VIOLATED", "a")]
+    assert _verdicts("paper", broken)["rma-fixed"].verdict == VIOLATED
+    # a move right of every robot seen does not by itself move the axis
+    right = [_row("rma-fixed", "seen", "VIOLATED", "a"), *on]
+    assert _verdicts("paper", right)["rma-fixed"].verdict == NOT_PROVED
+
+
+def test_approach_is_liveness_not_encoded_whatever_its_step_rows_say():
+    rows = [_row("approach", "x-nondecreasing", "PROVED", "a", IMMEDIATE)]
+    v = _verdicts("paper", rows)["approach"]
+    assert v.verdict == NOT_ENCODED and "liveness" in v.why
+
+
+def test_two_movers_are_needed_except_under_the_centralized_scheduler():
+    rows = [_row("no-collision", "one-mover", "PROVED", "a", SUBSTANTIVE)]
+    assert _verdicts("paper", rows)["no-collision"].verdict == NOT_PROVED
+    v = _verdicts("paper-centralized", rows)["no-collision"]
+    assert v.verdict == PROVED and "no two robots move at once" in v.why
+
+
+def test_the_legs_need_the_repairs_own_rightward_obligations():
+    rows = [_row("no-collision", "leg", "PROVED", "horizontal", SUBSTANTIVE)]
+    rows += [_row("approach", "x-nondecreasing", "PROVED", "scenario-1", IMMEDIATE)]
+    v = _verdicts("repaired", rows)["no-collision"]
+    assert v.verdict == NOT_PROVED and "rightward: no obligation for repair-align, repair-approach" in v.why
+    rows += [_row("approach", "x-nondecreasing", "PROVED", f"repair-{k}.c", IMMEDIATE) for k in ("align", "approach")]
+    assert _verdicts("repaired", rows)["no-collision"].verdict == PROVED
+
+
+def test_the_repairs_own_destinations_are_obligations():
+    """repair-align and repair-approach never decrease x, never move right of every robot seen, never
+    take a robot off the right-most axis; repair-contract keeps x: each PROVED, from the rules' encoding."""
+    from fatline_verify.prove.tasks import paper_part
+
+    model = load_model("repaired")
+    specs = [t for t in tasks_for(model, (Lemma.RMA_FIXED, Lemma.APPROACH)) if getattr(t, "repair", "")]
+    assert {t.repair for t in specs} == {"align", "approach", "contract"}
+    picked = {}
+    for t in specs:
+        picked.setdefault((t.form, t.repair), t)
+    for t in picked.values():
+        got = decided(prove_spec, paper_part(model), t, timeout=20, out=None, small=False)
+        assert got.verdict is Verdict.PROVED, (t.key, got.reason)
+
+
+def test_every_table_entry_has_parts_and_an_argument():
+    for entry in TABLE:
+        assert entry.parts and entry.argument
+        assert all(part.says for part in entry.parts)
+
+
+def test_counts_split_proved_rows_by_basis():
+    rows = [_row("x", "f", "PROVED", basis=k) for k in (SUBSTANTIVE, IMMEDIATE, IMMEDIATE, VACUOUS)]
+    assert counts_text(rows) == "1 substantive, 2 immediate, 1 vacuous"
+    assert counts_text([_row("x", "f", "PROVED")]) == "1 unclassified"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["paper", "paper-literal"])
+def test_no_lemma_proved_beside_a_violated_check_in_a_fresh_slice(name, tmp_path):
+    """rma-fixed proved fresh into tmp_path: its lemma-level verdict is never PROVED where the checker
+    finds rma-fixed VIOLATED (paper-literal), and is PROVED where both halves are (paper)."""
+    from fatline_verify.cli import main
+    from fatline_verify.outputs import read_json
+
+    code = main(["prove", name, "--lemma", "rma-fixed", "--out", str(tmp_path), "-q", "--timeout", "20"])
+    rows = read_json(tmp_path / name / "results.json")["obligations"]
+    v = _verdicts(name, rows)["rma-fixed"]
+    assert all(r.get("basis") for r in rows if r["verdict"] == "PROVED")
+    if name == "paper-literal":
+        assert code == 1 and v.verdict == VIOLATED and "on-rma" in v.why
+    else:
+        assert code == 0 and v.verdict == PROVED
