@@ -50,6 +50,14 @@ LIVENESS = "liveness"
 
 
 def cmd_prove(args: argparse.Namespace) -> int:
+    if args.with_ is not None:
+        from .prove_whatif import cmd_prove_whatif
+
+        return cmd_prove_whatif(args)  # what-if rows of their own: the shipped obligations untouched
+    if args.q is not None:
+        from ..errors import InvalidInput
+
+        raise InvalidInput(f"q={args.q}: --q sets the lattice of the --with obligations; expected --with")
     from ..prove.prover import LEMMAS, prove, task_key, tasks_for
     from ..prove.results import ProofResults
 
@@ -195,6 +203,19 @@ def register(sub: Any) -> None:
         help="counterexamples found elsewhere (by hand: fatline simulate --trace): each trace's initial "
         "configuration is replayed against every obligation before any search, every robot tried as r; one "
         "that decides the case and breaks the claim is VIOLATED, its source named",
+    )
+    p.add_argument(
+        "--with",
+        dest="with_",
+        metavar="KINDS",
+        help="what-if: instead, the obligations of the legs fatline reach --with adds (left, corner; "
+        "comma-separated), decided on the lattice and replayed by reach's family; rows in "
+        "OUT/MODEL/whatif-KINDS-qQ.json",
+    )
+    p.add_argument(
+        "--q",
+        type=integer("q", 1, 4),
+        help="with --with: lattice points per radius of those obligations (default: the model's q)",
     )
     p.add_argument(
         "--no-corpus",

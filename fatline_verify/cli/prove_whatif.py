@@ -1,0 +1,107 @@
+"""``fatline prove MODEL --with left,corner [--q Q]``: the what-if legs' obligations
+(:mod:`fatline_verify.prove.whatif`), rows of their own; the shipped obligations are not touched."""
+
+from __future__ import annotations
+
+import argparse
+import time
+
+from ..errors import InvalidInput
+from ..integrity import seal
+from ..lemmas.properties import Lemma
+from ..outputs import Kind, child, claim_dir, claim_file, claim_files, write_json
+from .common import EXIT_FOUND, EXIT_INCONCLUSIVE, EXIT_INTERRUPTED, EXIT_OK, emit, model_arg
+
+ALL = "all"
+
+
+def parse_with(text: str) -> frozenset[str]:
+    """``left``, ``corner`` or ``left,corner`` (``fatline reach --with``'s names); bad ones are one line."""
+    from ..prove.smt.whatif import KINDS
+
+    names = [t.strip() for t in text.split(",") if t.strip()]
+    bad = [t for t in names if t not in KINDS]
+    if not names or bad:
+        raise InvalidInput(f"with={text!r}: expected what-if leg kinds, comma-separated, of {', '.join(KINDS)}")
+    return frozenset(names)
+
+
+def cmd_prove_whatif(args: argparse.Namespace) -> int:
+    """The what-if rows: checked input first (one line, exit 2), then each obligation in turn, the JSON
+    rewritten after each (an interrupted run keeps what it finished)."""
+    from ..prove.smt.legs import missing_repairs
+    from ..prove.smt.solving import solver_version
+    from ..prove.smt.whatif import whatif_specs
+    from ..prove.tasks import check_encoded
+    from ..prove.whatif import prove_whatif
+
+    kinds = parse_with(args.with_)
+    model = model_arg(args.model)
+    missing = missing_repairs(model)
+    if missing:
+        raise InvalidInput(
+            f"model={model.name!r}: the what-if legs extend the repaired family's; expected a model with "
+            f"{', '.join(missing)} (e.g. repaired)"
+        )
+    check_encoded(model)  # ASYNC and corner rules are refused as by fatline prove
+    if args.q is not None and args.q != model.parameters.q:
+        model = model.with_q(args.q)
+    q = model.parameters.q
+    if args.lemma not in (ALL, Lemma.NO_COLLISION, Lemma.CONNECTIVITY):
+        raise InvalidInput(f"lemma={args.lemma}: --with decides only no-collision and connectivity (or all)")
+    lemmas = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY) if args.lemma == ALL else (Lemma(args.lemma),)
+    specs = whatif_specs(kinds, q, lemmas)
+    tag = f"whatif-{'-'.join(sorted(kinds))}-q{q}"
+    root = claim_dir(args.out, name="out")
+    out = claim_dir(child(root, model.name), name="out")
+    json_path = out / f"{tag}.json"
+    claim_files([json_path], name="out", kind=Kind.PROVE, force=args.force)
+    extra = claim_file(args.json, name="json", kind=Kind.PROVE, force=args.force) if args.json else None
+    smt_dir = out / tag
+    rows: list[dict[str, object]] = []
+
+    def document() -> dict[str, object]:
+        return seal(
+            {
+                "format": Kind.PROVE.value,
+                "model": model.name,
+                "what_if": sorted(kinds),
+                "q": q,
+                "solver": solver_version(),
+                "timeout": args.timeout,
+                "obligations": rows,
+            }
+        )
+
+    interrupted = False
+    t0 = time.monotonic()
+    try:
+        for spec in specs:
+            got = prove_whatif(model, spec, timeout=args.timeout, out=smt_dir)
+            rows.append(got.row())
+            write_json(json_path, document())
+            if not args.quiet:
+                emit([f"{got.verdict:<12} {got.seconds:7.2f} s  {spec.key}"])
+    except KeyboardInterrupt:
+        interrupted = True
+    counts = {v: sum(r["verdict"] == v for r in rows) for v in ("PROVED", "VIOLATED", "INCONCLUSIVE")}
+    lines = [
+        f"{model.name} --with {','.join(sorted(kinds))} (what-if legs, not the shipped rules), lattice q = {q}: "
+        f"{len(rows)} of {len(specs)} obligations, {counts['PROVED']} PROVED, {counts['VIOLATED']} VIOLATED, "
+        f"{counts['INCONCLUSIVE']} INCONCLUSIVE in {time.monotonic() - t0:.1f} s; rows in {json_path}"
+    ]
+    if args.verbose or not args.quiet:
+        lines += [f"  {r['key']}: {r['verdict']}: {r['reason']}" for r in rows if r["verdict"] != "PROVED"]
+    if interrupted:
+        lines.append(f"INTERRUPTED: {len(rows)} of {len(specs)} obligations finished and saved in {json_path}")
+    emit(lines)
+    if extra is not None:
+        write_json(extra, document())
+    if interrupted:
+        return EXIT_INTERRUPTED
+    if counts["VIOLATED"]:
+        return EXIT_FOUND
+    return EXIT_INCONCLUSIVE if counts["INCONCLUSIVE"] else EXIT_OK
+
+
+__all__ = ["cmd_prove_whatif", "parse_with"]
