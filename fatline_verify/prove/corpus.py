@@ -39,9 +39,9 @@ from ..integrity import seal, sealed
 from ..model.config import Model
 from ..model.numbers import Point
 from .replay import Known, Replayed, replay_known
-from .smt.claims import CLOSER, SEEN, X_NONDECREASING, Spec
+from .smt.claims import CLOSER, ON_RMA, SEEN, X_NONDECREASING, Spec
 
-TRACELESS = (CLOSER, SEEN, X_NONDECREASING)
+TRACELESS = (CLOSER, SEEN, ON_RMA, X_NONDECREASING)
 """The forms whose counterexample is a configuration, not a trace."""
 CORPUS_PATH = Path(__file__).with_name("corpus.json")
 """The shipped corpus (package data)."""
@@ -87,7 +87,7 @@ class Entry:
     @property
     def traced(self) -> bool:
         """Whether its obligation's counterexample is a trace (a round played), not a configuration
-        (``closer``, ``seen``, ``x-nondecreasing``: a claim about r's decision alone)."""
+        (``closer``, ``seen``, ``on-rma``, ``x-nondecreasing``: a claim about r's decision alone)."""
         rest = self.key.split("/", 1)[1]
         return not any(rest.startswith(f"{form}-") for form in TRACELESS)
 
