@@ -1,0 +1,352 @@
+; Obligation: rma-fixed, form on-rma, r's case scenario-3.up-4; model paper, scheduler ssync.
+; Claim: whenever r decides this case, r, on the right-most axis (no robot right of it), keeps its x (never leaves the axis).
+; r's case: witness w: a visible robot of B u C u D; x_psi from its x (psi_right); universal: no visible robot in E u F u G, every visible B u C u D robot has x >= x_w; witnesses c in R_psi n C, d in R_psi n D; universal: no visible robot in R_psi n B; candidates 1..3 up are blocked (witnesses k); candidate 4 up is within the search bound; universal: it is vacant.
+; Named robots: r, r.w, r.c, r.d, r.k+1, r.k+2, r.k+3 (r at the origin). Two names are one robot iff their centres are equal; distinct robots are disjoint discs. Universal conditions are asserted for every named robot the decider sees.
+; Why unsat covers swarms of every size: in any swarm where the claim fails with r in this case, the robots playing the named roles (they exist: the case's witnesses, the robot the claim is about) satisfy every constraint here, because the universal conditions hold for every robot of the swarm. So unsat means no swarm, of any size, breaks the claim in this case. (Conversely a solution's named robots make the same decisions: universal conditions hold in every sub-swarm; tests/test_cases.py checks this on random and crowded swarms.)
+; How unsat may be shown: on the obligation's linearization (every comparison that multiplies two non-constant terms replaced by a Boolean; where it compares a squared distance with a constant, the Boolean implies exact linear cuts: tangent lines inside the disc, one of a grid's sector half-planes outside it), which every solution of the obligation also solves; an unsat linearization is an unsat obligation.
+; Assumptions: exact real arithmetic; unit discs; one shared snapshot per round.
+(set-logic QF_NRA)
+(declare-fun r.w.y () Real)
+(declare-fun r.w.x () Real)
+(declare-fun r.c.y () Real)
+(declare-fun r.c.x () Real)
+(declare-fun r.d.y () Real)
+(declare-fun r.d.x () Real)
+(declare-fun r.k+1.y () Real)
+(declare-fun r.k+1.x () Real)
+(declare-fun r.k+2.y () Real)
+(declare-fun r.k+2.x () Real)
+(declare-fun r.k+3.y () Real)
+(declare-fun r.k+3.x () Real)
+(declare-fun r.case0 () Bool)
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- 0.0 r.w.x) (- 0.0 r.w.x))
+                  (* (- 0.0 r.w.y) (- 0.0 r.w.y))))))
+  (or (and (= 0.0 r.w.x) (= 0.0 r.w.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- 0.0 r.c.x) (- 0.0 r.c.x))
+                  (* (- 0.0 r.c.y) (- 0.0 r.c.y))))))
+  (or (and (= 0.0 r.c.x) (= 0.0 r.c.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- 0.0 r.d.x) (- 0.0 r.d.x))
+                  (* (- 0.0 r.d.y) (- 0.0 r.d.y))))))
+  (or (and (= 0.0 r.d.x) (= 0.0 r.d.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- 0.0 r.k+1.x) (- 0.0 r.k+1.x))
+                  (* (- 0.0 r.k+1.y) (- 0.0 r.k+1.y))))))
+  (or (and (= 0.0 r.k+1.x) (= 0.0 r.k+1.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- 0.0 r.k+2.x) (- 0.0 r.k+2.x))
+                  (* (- 0.0 r.k+2.y) (- 0.0 r.k+2.y))))))
+  (or (and (= 0.0 r.k+2.x) (= 0.0 r.k+2.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- 0.0 r.k+3.x) (- 0.0 r.k+3.x))
+                  (* (- 0.0 r.k+3.y) (- 0.0 r.k+3.y))))))
+  (or (and (= 0.0 r.k+3.x) (= 0.0 r.k+3.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.w.x r.c.x) (- r.w.x r.c.x))
+                  (* (- r.w.y r.c.y) (- r.w.y r.c.y))))))
+  (or (and (= r.w.x r.c.x) (= r.w.y r.c.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.w.x r.d.x) (- r.w.x r.d.x))
+                  (* (- r.w.y r.d.y) (- r.w.y r.d.y))))))
+  (or (and (= r.w.x r.d.x) (= r.w.y r.d.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.w.x r.k+1.x) (- r.w.x r.k+1.x))
+                  (* (- r.w.y r.k+1.y) (- r.w.y r.k+1.y))))))
+  (or (and (= r.w.x r.k+1.x) (= r.w.y r.k+1.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.w.x r.k+2.x) (- r.w.x r.k+2.x))
+                  (* (- r.w.y r.k+2.y) (- r.w.y r.k+2.y))))))
+  (or (and (= r.w.x r.k+2.x) (= r.w.y r.k+2.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.w.x r.k+3.x) (- r.w.x r.k+3.x))
+                  (* (- r.w.y r.k+3.y) (- r.w.y r.k+3.y))))))
+  (or (and (= r.w.x r.k+3.x) (= r.w.y r.k+3.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.c.x r.d.x) (- r.c.x r.d.x))
+                  (* (- r.c.y r.d.y) (- r.c.y r.d.y))))))
+  (or (and (= r.c.x r.d.x) (= r.c.y r.d.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.c.x r.k+1.x) (- r.c.x r.k+1.x))
+                  (* (- r.c.y r.k+1.y) (- r.c.y r.k+1.y))))))
+  (or (and (= r.c.x r.k+1.x) (= r.c.y r.k+1.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.c.x r.k+2.x) (- r.c.x r.k+2.x))
+                  (* (- r.c.y r.k+2.y) (- r.c.y r.k+2.y))))))
+  (or (and (= r.c.x r.k+2.x) (= r.c.y r.k+2.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.c.x r.k+3.x) (- r.c.x r.k+3.x))
+                  (* (- r.c.y r.k+3.y) (- r.c.y r.k+3.y))))))
+  (or (and (= r.c.x r.k+3.x) (= r.c.y r.k+3.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.d.x r.k+1.x) (- r.d.x r.k+1.x))
+                  (* (- r.d.y r.k+1.y) (- r.d.y r.k+1.y))))))
+  (or (and (= r.d.x r.k+1.x) (= r.d.y r.k+1.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.d.x r.k+2.x) (- r.d.x r.k+2.x))
+                  (* (- r.d.y r.k+2.y) (- r.d.y r.k+2.y))))))
+  (or (and (= r.d.x r.k+2.x) (= r.d.y r.k+2.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.d.x r.k+3.x) (- r.d.x r.k+3.x))
+                  (* (- r.d.y r.k+3.y) (- r.d.y r.k+3.y))))))
+  (or (and (= r.d.x r.k+3.x) (= r.d.y r.k+3.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.k+1.x r.k+2.x) (- r.k+1.x r.k+2.x))
+                  (* (- r.k+1.y r.k+2.y) (- r.k+1.y r.k+2.y))))))
+  (or (and (= r.k+1.x r.k+2.x) (= r.k+1.y r.k+2.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.k+1.x r.k+3.x) (- r.k+1.x r.k+3.x))
+                  (* (- r.k+1.y r.k+3.y) (- r.k+1.y r.k+3.y))))))
+  (or (and (= r.k+1.x r.k+3.x) (= r.k+1.y r.k+3.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.k+2.x r.k+3.x) (- r.k+2.x r.k+3.x))
+                  (* (- r.k+2.y r.k+3.y) (- r.k+2.y r.k+3.y))))))
+  (or (and (= r.k+2.x r.k+3.x) (= r.k+2.y r.k+3.y)) a!1)))
+(assert (let ((a!1 (>= 16.0
+               (+ (* (- 0.0 r.w.x) (- 0.0 r.w.x))
+                  (* (- 0.0 r.w.y) (- 0.0 r.w.y)))))
+      (a!2 (and (> (- r.w.x 0.0) (- 2.0)) (> 2.0 (- r.w.x 0.0))))
+      (a!3 (and (> (- r.w.y 0.0) (- 2.0)) (> 2.0 (- r.w.y 0.0))))
+      (a!7 (>= 16.0
+               (+ (* (- 0.0 r.c.x) (- 0.0 r.c.x))
+                  (* (- 0.0 r.c.y) (- 0.0 r.c.y)))))
+      (a!8 (and (> (- (- r.c.x 0.0) (- r.w.x 0.0)) (- 2.0))
+                (> 2.0 (- (- r.c.x 0.0) (- r.w.x 0.0)))))
+      (a!9 (and (> (- r.c.y 0.0) (- 2.0)) (> 2.0 (- r.c.y 0.0))))
+      (a!10 (>= 16.0
+                (+ (* (- 0.0 r.d.x) (- 0.0 r.d.x))
+                   (* (- 0.0 r.d.y) (- 0.0 r.d.y)))))
+      (a!11 (and (> (- (- r.d.x 0.0) (- r.w.x 0.0)) (- 2.0))
+                 (> 2.0 (- (- r.d.x 0.0) (- r.w.x 0.0)))))
+      (a!12 (and (> (- r.d.x 0.0) (- 2.0)) (> 2.0 (- r.d.x 0.0))))
+      (a!13 (and (> (- r.d.y 0.0) (- 2.0)) (> 2.0 (- r.d.y 0.0))))
+      (a!16 (>= 16.0
+                (+ (* (- 0.0 r.k+1.x) (- 0.0 r.k+1.x))
+                   (* (- 0.0 r.k+1.y) (- 0.0 r.k+1.y)))))
+      (a!17 (* (- (- r.k+1.x 0.0) (- r.w.x 0.0))
+               (- (- r.k+1.x 0.0) (- r.w.x 0.0))))
+      (a!19 (>= 16.0
+                (+ (* (- 0.0 r.k+2.x) (- 0.0 r.k+2.x))
+                   (* (- 0.0 r.k+2.y) (- 0.0 r.k+2.y)))))
+      (a!20 (* (- (- r.k+2.x 0.0) (- r.w.x 0.0))
+               (- (- r.k+2.x 0.0) (- r.w.x 0.0))))
+      (a!22 (>= 16.0
+                (+ (* (- 0.0 r.k+3.x) (- 0.0 r.k+3.x))
+                   (* (- 0.0 r.k+3.y) (- 0.0 r.k+3.y)))))
+      (a!23 (* (- (- r.k+3.x 0.0) (- r.w.x 0.0))
+               (- (- r.k+3.x 0.0) (- r.w.x 0.0))))
+      (a!25 (>= 16.0 (+ (* (- r.w.x 0.0) (- r.w.x 0.0)) (* 4.0 4.0))))
+      (a!26 (>= 16.0
+                (+ (* (- 0.0 0.0) (- 0.0 0.0)) (* (- 0.0 0.0) (- 0.0 0.0)))))
+      (a!27 (and (> (- 0.0 0.0) (- 2.0)) (> 2.0 (- 0.0 0.0))))
+      (a!35 (+ (* (- (- 0.0 0.0) (- r.w.x 0.0)) (- (- 0.0 0.0) (- r.w.x 0.0)))
+               (* (- (- 0.0 0.0) 4.0) (- (- 0.0 0.0) 4.0))))
+      (a!41 (+ (* (- (- r.w.x 0.0) (- r.w.x 0.0))
+                  (- (- r.w.x 0.0) (- r.w.x 0.0)))
+               (* (- (- r.w.y 0.0) 4.0) (- (- r.w.y 0.0) 4.0))))
+      (a!43 (and (> (- r.c.x 0.0) (- 2.0)) (> 2.0 (- r.c.x 0.0))))
+      (a!50 (+ (* (- (- r.c.x 0.0) (- r.w.x 0.0))
+                  (- (- r.c.x 0.0) (- r.w.x 0.0)))
+               (* (- (- r.c.y 0.0) 4.0) (- (- r.c.y 0.0) 4.0))))
+      (a!57 (+ (* (- (- r.d.x 0.0) (- r.w.x 0.0))
+                  (- (- r.d.x 0.0) (- r.w.x 0.0)))
+               (* (- (- r.d.y 0.0) 4.0) (- (- r.d.y 0.0) 4.0))))
+      (a!59 (and (> (- r.k+1.x 0.0) (- 2.0)) (> 2.0 (- r.k+1.x 0.0))))
+      (a!60 (and (> (- r.k+1.y 0.0) (- 2.0)) (> 2.0 (- r.k+1.y 0.0))))
+      (a!70 (and (> (- r.k+2.x 0.0) (- 2.0)) (> 2.0 (- r.k+2.x 0.0))))
+      (a!71 (and (> (- r.k+2.y 0.0) (- 2.0)) (> 2.0 (- r.k+2.y 0.0))))
+      (a!81 (and (> (- r.k+3.x 0.0) (- 2.0)) (> 2.0 (- r.k+3.x 0.0))))
+      (a!82 (and (> (- r.k+3.y 0.0) (- 2.0)) (> 2.0 (- r.k+3.y 0.0)))))
+(let ((a!4 (or (and a!2 (< 0.0 (- r.w.y 0.0)))
+               (and a!2 (> 0.0 (- r.w.y 0.0)))
+               (and a!3 (< 0.0 (- r.w.x 0.0)))
+               (and a!3 (> 0.0 (- r.w.x 0.0)))))
+      (a!14 (or (and a!12 (< 0.0 (- r.d.y 0.0)))
+                (and a!12 (> 0.0 (- r.d.y 0.0)))
+                (and a!13 (< 0.0 (- r.d.x 0.0)))
+                (and a!13 (> 0.0 (- r.d.x 0.0)))))
+      (a!18 (+ a!17 (* (- (- r.k+1.y 0.0) 1.0) (- (- r.k+1.y 0.0) 1.0))))
+      (a!21 (+ a!20 (* (- (- r.k+2.y 0.0) 2.0) (- (- r.k+2.y 0.0) 2.0))))
+      (a!24 (+ a!23 (* (- (- r.k+3.y 0.0) 3.0) (- (- r.k+3.y 0.0) 3.0))))
+      (a!28 (or (and a!27 (< 0.0 (- 0.0 0.0))) (and a!27 (> 0.0 (- 0.0 0.0)))))
+      (a!30 (not (and a!27 (> 0.0 (- 0.0 0.0)))))
+      (a!38 (not (and a!3 (> 0.0 (- r.w.x 0.0)))))
+      (a!44 (or (and a!43 (< 0.0 (- r.c.y 0.0)))
+                (and a!43 (> 0.0 (- r.c.y 0.0)))
+                (and a!9 (< 0.0 (- r.c.x 0.0)))
+                (and a!9 (> 0.0 (- r.c.x 0.0)))))
+      (a!46 (not (and a!9 (> 0.0 (- r.c.x 0.0)))))
+      (a!53 (not (and a!13 (> 0.0 (- r.d.x 0.0)))))
+      (a!61 (or (and a!59 (< 0.0 (- r.k+1.y 0.0)))
+                (and a!59 (> 0.0 (- r.k+1.y 0.0)))
+                (and a!60 (< 0.0 (- r.k+1.x 0.0)))
+                (and a!60 (> 0.0 (- r.k+1.x 0.0)))))
+      (a!63 (not (and a!60 (> 0.0 (- r.k+1.x 0.0)))))
+      (a!68 (+ a!17 (* (- (- r.k+1.y 0.0) 4.0) (- (- r.k+1.y 0.0) 4.0))))
+      (a!72 (or (and a!70 (< 0.0 (- r.k+2.y 0.0)))
+                (and a!70 (> 0.0 (- r.k+2.y 0.0)))
+                (and a!71 (< 0.0 (- r.k+2.x 0.0)))
+                (and a!71 (> 0.0 (- r.k+2.x 0.0)))))
+      (a!74 (not (and a!71 (> 0.0 (- r.k+2.x 0.0)))))
+      (a!79 (+ a!20 (* (- (- r.k+2.y 0.0) 4.0) (- (- r.k+2.y 0.0) 4.0))))
+      (a!83 (or (and a!81 (< 0.0 (- r.k+3.y 0.0)))
+                (and a!81 (> 0.0 (- r.k+3.y 0.0)))
+                (and a!82 (< 0.0 (- r.k+3.x 0.0)))
+                (and a!82 (> 0.0 (- r.k+3.x 0.0)))))
+      (a!85 (not (and a!82 (> 0.0 (- r.k+3.x 0.0)))))
+      (a!90 (+ a!23 (* (- (- r.k+3.y 0.0) 4.0) (- (- r.k+3.y 0.0) 4.0)))))
+(let ((a!5 (and (not a!4) (< 0.0 (- r.w.x 0.0)) (< 0.0 (- r.w.y 0.0))))
+      (a!15 (and (not a!14) (< 0.0 (- r.d.x 0.0)) (> 0.0 (- r.d.y 0.0))))
+      (a!29 (not (and (not (or a!28 a!28))
+                      (> 0.0 (- 0.0 0.0))
+                      (< 0.0 (- 0.0 0.0)))))
+      (a!31 (not (and (not (or a!28 a!28))
+                      (> 0.0 (- 0.0 0.0))
+                      (> 0.0 (- 0.0 0.0)))))
+      (a!32 (and (not (or a!28 a!28)) (< 0.0 (- 0.0 0.0)) (< 0.0 (- 0.0 0.0))))
+      (a!37 (not (and (not a!4) (> 0.0 (- r.w.x 0.0)) (< 0.0 (- r.w.y 0.0)))))
+      (a!39 (not (and (not a!4) (> 0.0 (- r.w.x 0.0)) (> 0.0 (- r.w.y 0.0)))))
+      (a!45 (not (and (not a!44) (> 0.0 (- r.c.x 0.0)) (< 0.0 (- r.c.y 0.0)))))
+      (a!47 (not (and (not a!44) (> 0.0 (- r.c.x 0.0)) (> 0.0 (- r.c.y 0.0)))))
+      (a!48 (and (not a!44) (< 0.0 (- r.c.x 0.0)) (< 0.0 (- r.c.y 0.0))))
+      (a!52 (not (and (not a!14) (> 0.0 (- r.d.x 0.0)) (< 0.0 (- r.d.y 0.0)))))
+      (a!54 (not (and (not a!14) (> 0.0 (- r.d.x 0.0)) (> 0.0 (- r.d.y 0.0)))))
+      (a!55 (and (not a!14) (< 0.0 (- r.d.x 0.0)) (< 0.0 (- r.d.y 0.0))))
+      (a!62 (not (and (not a!61)
+                      (> 0.0 (- r.k+1.x 0.0))
+                      (< 0.0 (- r.k+1.y 0.0)))))
+      (a!64 (not (and (not a!61)
+                      (> 0.0 (- r.k+1.x 0.0))
+                      (> 0.0 (- r.k+1.y 0.0)))))
+      (a!65 (and (not a!61) (< 0.0 (- r.k+1.x 0.0)) (< 0.0 (- r.k+1.y 0.0))))
+      (a!73 (not (and (not a!72)
+                      (> 0.0 (- r.k+2.x 0.0))
+                      (< 0.0 (- r.k+2.y 0.0)))))
+      (a!75 (not (and (not a!72)
+                      (> 0.0 (- r.k+2.x 0.0))
+                      (> 0.0 (- r.k+2.y 0.0)))))
+      (a!76 (and (not a!72) (< 0.0 (- r.k+2.x 0.0)) (< 0.0 (- r.k+2.y 0.0))))
+      (a!84 (not (and (not a!83)
+                      (> 0.0 (- r.k+3.x 0.0))
+                      (< 0.0 (- r.k+3.y 0.0)))))
+      (a!86 (not (and (not a!83)
+                      (> 0.0 (- r.k+3.x 0.0))
+                      (> 0.0 (- r.k+3.y 0.0)))))
+      (a!87 (and (not a!83) (< 0.0 (- r.k+3.x 0.0)) (< 0.0 (- r.k+3.y 0.0)))))
+(let ((a!6 (or a!5
+               (and a!3 (< 0.0 (- r.w.x 0.0)))
+               (and (not a!4) (< 0.0 (- r.w.x 0.0)) (> 0.0 (- r.w.y 0.0)))))
+      (a!33 (or a!32
+                (and a!27 (< 0.0 (- 0.0 0.0)))
+                (and (not (or a!28 a!28))
+                     (< 0.0 (- 0.0 0.0))
+                     (> 0.0 (- 0.0 0.0)))))
+      (a!34 (and (> (- (- 0.0 0.0) (- r.w.x 0.0)) (- 2.0))
+                 (> 2.0 (- (- 0.0 0.0) (- r.w.x 0.0)))
+                 a!32))
+      (a!40 (and (> (- (- r.w.x 0.0) (- r.w.x 0.0)) (- 2.0))
+                 (> 2.0 (- (- r.w.x 0.0) (- r.w.x 0.0)))
+                 a!5))
+      (a!49 (or a!48
+                (and a!9 (< 0.0 (- r.c.x 0.0)))
+                (and (not a!44) (< 0.0 (- r.c.x 0.0)) (> 0.0 (- r.c.y 0.0)))))
+      (a!56 (or a!55 (and a!13 (< 0.0 (- r.d.x 0.0))) a!15))
+      (a!66 (or a!65
+                (and a!60 (< 0.0 (- r.k+1.x 0.0)))
+                (and (not a!61) (< 0.0 (- r.k+1.x 0.0)) (> 0.0 (- r.k+1.y 0.0)))))
+      (a!67 (and (> (- (- r.k+1.x 0.0) (- r.w.x 0.0)) (- 2.0))
+                 (> 2.0 (- (- r.k+1.x 0.0) (- r.w.x 0.0)))
+                 a!65))
+      (a!77 (or a!76
+                (and a!71 (< 0.0 (- r.k+2.x 0.0)))
+                (and (not a!72) (< 0.0 (- r.k+2.x 0.0)) (> 0.0 (- r.k+2.y 0.0)))))
+      (a!78 (and (> (- (- r.k+2.x 0.0) (- r.w.x 0.0)) (- 2.0))
+                 (> 2.0 (- (- r.k+2.x 0.0) (- r.w.x 0.0)))
+                 a!76))
+      (a!88 (or a!87
+                (and a!82 (< 0.0 (- r.k+3.x 0.0)))
+                (and (not a!83) (< 0.0 (- r.k+3.x 0.0)) (> 0.0 (- r.k+3.y 0.0)))))
+      (a!89 (and (> (- (- r.k+3.x 0.0) (- r.w.x 0.0)) (- 2.0))
+                 (> 2.0 (- (- r.k+3.x 0.0) (- r.w.x 0.0)))
+                 a!87)))
+(let ((a!36 (and a!29
+                 a!30
+                 a!31
+                 (=> a!33 (>= (- 0.0 0.0) (- r.w.x 0.0)))
+                 (not a!34)
+                 (not (> 4.0 a!35))))
+      (a!42 (and a!37
+                 a!38
+                 a!39
+                 (=> a!6 (>= (- r.w.x 0.0) (- r.w.x 0.0)))
+                 (not a!40)
+                 (not (> 4.0 a!41))))
+      (a!51 (and a!45
+                 a!46
+                 a!47
+                 (=> a!49 (>= (- r.c.x 0.0) (- r.w.x 0.0)))
+                 (not (and a!8 a!48))
+                 (not (> 4.0 a!50))))
+      (a!58 (and a!52
+                 a!53
+                 a!54
+                 (=> a!56 (>= (- r.d.x 0.0) (- r.w.x 0.0)))
+                 (not (and a!11 a!55))
+                 (not (> 4.0 a!57))))
+      (a!69 (and a!62
+                 a!63
+                 a!64
+                 (=> a!66 (>= (- r.k+1.x 0.0) (- r.w.x 0.0)))
+                 (not a!67)
+                 (not (> 4.0 a!68))))
+      (a!80 (and a!73
+                 a!74
+                 a!75
+                 (=> a!77 (>= (- r.k+2.x 0.0) (- r.w.x 0.0)))
+                 (not a!78)
+                 (not (> 4.0 a!79))))
+      (a!91 (and a!84
+                 a!85
+                 a!86
+                 (=> a!88 (>= (- r.k+3.x 0.0) (- r.w.x 0.0)))
+                 (not a!89)
+                 (not (> 4.0 a!90)))))
+(let ((a!92 (and (not (and (= 0.0 r.w.x) (= 0.0 r.w.y)))
+                 a!1
+                 a!6
+                 (not (and (= 0.0 r.c.x) (= 0.0 r.c.y)))
+                 a!7
+                 a!8
+                 (and a!9 (< 0.0 (- r.c.x 0.0)))
+                 (not (and (= 0.0 r.d.x) (= 0.0 r.d.y)))
+                 a!10
+                 a!11
+                 a!15
+                 (not (and (= 0.0 r.k+1.x) (= 0.0 r.k+1.y)))
+                 a!16
+                 (> 4.0 a!18)
+                 (not (and (= 0.0 r.k+2.x) (= 0.0 r.k+2.y)))
+                 a!19
+                 (> 4.0 a!21)
+                 (not (and (= 0.0 r.k+3.x) (= 0.0 r.k+3.y)))
+                 a!22
+                 (> 4.0 a!24)
+                 a!25
+                 (or (and (= 0.0 0.0) (= 0.0 0.0)) (=> a!26 a!36))
+                 (or (and (= 0.0 r.w.x) (= 0.0 r.w.y)) (=> a!1 a!42))
+                 (or (and (= 0.0 r.c.x) (= 0.0 r.c.y)) (=> a!7 a!51))
+                 (or (and (= 0.0 r.d.x) (= 0.0 r.d.y)) (=> a!10 a!58))
+                 (or (and (= 0.0 r.k+1.x) (= 0.0 r.k+1.y)) (=> a!16 a!69))
+                 (or (and (= 0.0 r.k+2.x) (= 0.0 r.k+2.y)) (=> a!19 a!80))
+                 (or (and (= 0.0 r.k+3.x) (= 0.0 r.k+3.y)) (=> a!22 a!91)))))
+  (=> r.case0 a!92))))))))
+(assert (or r.case0))
+(assert (and (>= 0.0 r.w.x)
+     (>= 0.0 r.c.x)
+     (>= 0.0 r.d.x)
+     (>= 0.0 r.k+1.x)
+     (>= 0.0 r.k+2.x)
+     (>= 0.0 r.k+3.x)
+     (distinct 0.0 (+ 0.0 (- r.w.x 0.0)))))
+(check-sat)

@@ -1,0 +1,54 @@
+; Obligation: rma-fixed, form on-rma, r's case repair-contract.nomovement-4-only-AI; model repaired, scheduler ssync.
+; Claim: whenever r decides this case, r, on the right-most axis (no robot right of it), keeps its x (never leaves the axis).
+; r's destination is the repaired rule set's own, in place of the case's: repair_stack = align: the top or bottom of a vertical, seeing only A u I, moves along its vertical (fatline_verify/rules/repaired/algorithm.py); its conditions are asserted with the case's.
+; r's case: witness a: a visible robot in A u I; universal: no visible robot in B u C u D u E u F u G.
+; Named robots: r, r.a (r at the origin). Two names are one robot iff their centres are equal; distinct robots are disjoint discs. Universal conditions are asserted for every named robot the decider sees.
+; Why unsat covers swarms of every size: in any swarm where the claim fails with r in this case, the robots playing the named roles (they exist: the case's witnesses, the robot the claim is about) satisfy every constraint here, because the universal conditions hold for every robot of the swarm. So unsat means no swarm, of any size, breaks the claim in this case. (Conversely a solution's named robots make the same decisions: universal conditions hold in every sub-swarm; tests/test_cases.py checks this on random and crowded swarms.)
+; How unsat may be shown: on the obligation's linearization (every comparison that multiplies two non-constant terms replaced by a Boolean; where it compares a squared distance with a constant, the Boolean implies exact linear cuts: tangent lines inside the disc, one of a grid's sector half-planes outside it), which every solution of the obligation also solves; an unsat linearization is an unsat obligation.
+; Assumptions: exact real arithmetic; unit discs; one shared snapshot per round.
+; Repaired model: these are the paper's rules under its readings, its repairs off. A repaired move is one leg toward their destination (never farther right, never left of r), or a repair's own: repair-align to the greatest x r sees, repair-approach 2 radii short of psi_right (right of r), repair-contract vertical.
+(set-logic QF_NRA)
+(declare-fun r.a.y () Real)
+(declare-fun r.a.x () Real)
+(declare-fun r.case0 () Bool)
+(declare-fun r.contract () Real)
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- 0.0 r.a.x) (- 0.0 r.a.x))
+                  (* (- 0.0 r.a.y) (- 0.0 r.a.y))))))
+  (or (and (= 0.0 r.a.x) (= 0.0 r.a.y)) a!1)))
+(assert (let ((a!1 (>= 16.0
+               (+ (* (- 0.0 r.a.x) (- 0.0 r.a.x))
+                  (* (- 0.0 r.a.y) (- 0.0 r.a.y)))))
+      (a!2 (and (> (- r.a.x 0.0) (- 2.0)) (> 2.0 (- r.a.x 0.0))))
+      (a!4 (>= 16.0 (+ (* (- 0.0 0.0) (- 0.0 0.0)) (* (- 0.0 0.0) (- 0.0 0.0)))))
+      (a!5 (and (> (- 0.0 0.0) (- 2.0)) (> 2.0 (- 0.0 0.0))))
+      (a!8 (and (> (- r.a.y 0.0) (- 2.0)) (> 2.0 (- r.a.y 0.0)))))
+(let ((a!3 (or (and a!2 (< 0.0 (- r.a.y 0.0))) (and a!2 (> 0.0 (- r.a.y 0.0)))))
+      (a!6 (or (and a!5 (< 0.0 (- 0.0 0.0))) (and a!5 (> 0.0 (- 0.0 0.0))))))
+(let ((a!7 (or (and (not (or a!6 a!6)) (< 0.0 (- 0.0 0.0)) (< 0.0 (- 0.0 0.0)))
+               (and a!5 (< 0.0 (- 0.0 0.0)))
+               (and (not (or a!6 a!6)) (< 0.0 (- 0.0 0.0)) (> 0.0 (- 0.0 0.0)))
+               (and (not (or a!6 a!6)) (> 0.0 (- 0.0 0.0)) (< 0.0 (- 0.0 0.0)))
+               (and a!5 (> 0.0 (- 0.0 0.0)))
+               (and (not (or a!6 a!6)) (> 0.0 (- 0.0 0.0)) (> 0.0 (- 0.0 0.0)))))
+      (a!9 (or a!3
+               (and a!8 (< 0.0 (- r.a.x 0.0)))
+               (and a!8 (> 0.0 (- r.a.x 0.0))))))
+(let ((a!10 (or (and (not a!9) (< 0.0 (- r.a.x 0.0)) (< 0.0 (- r.a.y 0.0)))
+                (and a!8 (< 0.0 (- r.a.x 0.0)))
+                (and (not a!9) (< 0.0 (- r.a.x 0.0)) (> 0.0 (- r.a.y 0.0)))
+                (and (not a!9) (> 0.0 (- r.a.x 0.0)) (< 0.0 (- r.a.y 0.0)))
+                (and a!8 (> 0.0 (- r.a.x 0.0)))
+                (and (not a!9) (> 0.0 (- r.a.x 0.0)) (> 0.0 (- r.a.y 0.0))))))
+(let ((a!11 (and (not (and (= 0.0 r.a.x) (= 0.0 r.a.y)))
+                 a!1
+                 a!3
+                 (or (and (= 0.0 0.0) (= 0.0 0.0)) (=> a!4 (not a!7)))
+                 (or (and (= 0.0 r.a.x) (= 0.0 r.a.y)) (=> a!1 (not a!10))))))
+  (=> r.case0 a!11)))))))
+(assert (or r.case0))
+(assert (distinct 0.0 r.contract))
+(assert (>= 1.0 r.contract))
+(assert (>= r.contract (- 1.0)))
+(assert (and (>= 0.0 r.a.x) (distinct 0.0 0.0)))
+(check-sat)

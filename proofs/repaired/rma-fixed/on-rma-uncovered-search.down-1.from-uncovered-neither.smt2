@@ -1,0 +1,121 @@
+; Obligation: rma-fixed, form on-rma, r's case uncovered-search.down-1.from-uncovered-neither; model repaired, scheduler ssync.
+; Claim: whenever r decides this case, r, on the right-most axis (no robot right of it), keeps its x (never leaves the axis).
+; r's case: witness w: a visible robot of B u C u D; x_psi from its x (psi_right); universal: no visible robot in E u F u G, every visible B u C u D robot has x >= x_w; witnesses c in R_psi n C; universal: no visible robot in R_psi n B and R_psi n D; candidate 1 down is within the search bound; universal: it is vacant.
+; Named robots: r, r.w, r.c (r at the origin). Two names are one robot iff their centres are equal; distinct robots are disjoint discs. Universal conditions are asserted for every named robot the decider sees.
+; Why unsat covers swarms of every size: in any swarm where the claim fails with r in this case, the robots playing the named roles (they exist: the case's witnesses, the robot the claim is about) satisfy every constraint here, because the universal conditions hold for every robot of the swarm. So unsat means no swarm, of any size, breaks the claim in this case. (Conversely a solution's named robots make the same decisions: universal conditions hold in every sub-swarm; tests/test_cases.py checks this on random and crowded swarms.)
+; How unsat may be shown: on the obligation's linearization (every comparison that multiplies two non-constant terms replaced by a Boolean; where it compares a squared distance with a constant, the Boolean implies exact linear cuts: tangent lines inside the disc, one of a grid's sector half-planes outside it), which every solution of the obligation also solves; an unsat linearization is an unsat obligation.
+; Assumptions: exact real arithmetic; unit discs; one shared snapshot per round.
+; Repaired model: these are the paper's rules under its readings, its repairs off. A repaired move is one leg toward their destination (never farther right, never left of r), or a repair's own: repair-align to the greatest x r sees, repair-approach 2 radii short of psi_right (right of r), repair-contract vertical.
+(set-logic QF_NRA)
+(declare-fun r.w.y () Real)
+(declare-fun r.w.x () Real)
+(declare-fun r.c.y () Real)
+(declare-fun r.c.x () Real)
+(declare-fun r.case0 () Bool)
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- 0.0 r.w.x) (- 0.0 r.w.x))
+                  (* (- 0.0 r.w.y) (- 0.0 r.w.y))))))
+  (or (and (= 0.0 r.w.x) (= 0.0 r.w.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- 0.0 r.c.x) (- 0.0 r.c.x))
+                  (* (- 0.0 r.c.y) (- 0.0 r.c.y))))))
+  (or (and (= 0.0 r.c.x) (= 0.0 r.c.y)) a!1)))
+(assert (let ((a!1 (<= 4.0
+               (+ (* (- r.w.x r.c.x) (- r.w.x r.c.x))
+                  (* (- r.w.y r.c.y) (- r.w.y r.c.y))))))
+  (or (and (= r.w.x r.c.x) (= r.w.y r.c.y)) a!1)))
+(assert (let ((a!1 (>= 16.0
+               (+ (* (- 0.0 r.w.x) (- 0.0 r.w.x))
+                  (* (- 0.0 r.w.y) (- 0.0 r.w.y)))))
+      (a!2 (and (> (- r.w.x 0.0) (- 2.0)) (> 2.0 (- r.w.x 0.0))))
+      (a!3 (and (> (- r.w.y 0.0) (- 2.0)) (> 2.0 (- r.w.y 0.0))))
+      (a!8 (>= 16.0
+               (+ (* (- 0.0 r.c.x) (- 0.0 r.c.x))
+                  (* (- 0.0 r.c.y) (- 0.0 r.c.y)))))
+      (a!9 (and (> (- (- r.c.x 0.0) (- r.w.x 0.0)) (- 2.0))
+                (> 2.0 (- (- r.c.x 0.0) (- r.w.x 0.0)))))
+      (a!10 (and (> (- r.c.y 0.0) (- 2.0)) (> 2.0 (- r.c.y 0.0))))
+      (a!11 (>= 16.0 (+ (* (- r.w.x 0.0) (- r.w.x 0.0)) (* 1.0 1.0))))
+      (a!12 (>= 16.0
+                (+ (* (- 0.0 0.0) (- 0.0 0.0)) (* (- 0.0 0.0) (- 0.0 0.0)))))
+      (a!13 (and (> (- 0.0 0.0) (- 2.0)) (> 2.0 (- 0.0 0.0))))
+      (a!21 (and (> (- (- 0.0 0.0) (- r.w.x 0.0)) (- 2.0))
+                 (> 2.0 (- (- 0.0 0.0) (- r.w.x 0.0)))))
+      (a!22 (+ (* (- (- 0.0 0.0) (- r.w.x 0.0)) (- (- 0.0 0.0) (- r.w.x 0.0)))
+               (* (- (- 0.0 0.0) (- 1.0)) (- (- 0.0 0.0) (- 1.0)))))
+      (a!27 (and (> (- (- r.w.x 0.0) (- r.w.x 0.0)) (- 2.0))
+                 (> 2.0 (- (- r.w.x 0.0) (- r.w.x 0.0)))))
+      (a!28 (+ (* (- (- r.w.x 0.0) (- r.w.x 0.0))
+                  (- (- r.w.x 0.0) (- r.w.x 0.0)))
+               (* (- (- r.w.y 0.0) (- 1.0)) (- (- r.w.y 0.0) (- 1.0)))))
+      (a!30 (and (> (- r.c.x 0.0) (- 2.0)) (> 2.0 (- r.c.x 0.0))))
+      (a!38 (+ (* (- (- r.c.x 0.0) (- r.w.x 0.0))
+                  (- (- r.c.x 0.0) (- r.w.x 0.0)))
+               (* (- (- r.c.y 0.0) (- 1.0)) (- (- r.c.y 0.0) (- 1.0))))))
+(let ((a!4 (or (and a!2 (< 0.0 (- r.w.y 0.0)))
+               (and a!2 (> 0.0 (- r.w.y 0.0)))
+               (and a!3 (< 0.0 (- r.w.x 0.0)))
+               (and a!3 (> 0.0 (- r.w.x 0.0)))))
+      (a!14 (or (and a!13 (< 0.0 (- 0.0 0.0))) (and a!13 (> 0.0 (- 0.0 0.0)))))
+      (a!16 (not (and a!13 (> 0.0 (- 0.0 0.0)))))
+      (a!25 (not (and a!3 (> 0.0 (- r.w.x 0.0)))))
+      (a!31 (or (and a!30 (< 0.0 (- r.c.y 0.0)))
+                (and a!30 (> 0.0 (- r.c.y 0.0)))
+                (and a!10 (< 0.0 (- r.c.x 0.0)))
+                (and a!10 (> 0.0 (- r.c.x 0.0)))))
+      (a!33 (not (and a!10 (> 0.0 (- r.c.x 0.0))))))
+(let ((a!5 (and (not a!4) (< 0.0 (- r.w.x 0.0)) (< 0.0 (- r.w.y 0.0))))
+      (a!6 (and (not a!4) (< 0.0 (- r.w.x 0.0)) (> 0.0 (- r.w.y 0.0))))
+      (a!15 (not (and (not (or a!14 a!14))
+                      (> 0.0 (- 0.0 0.0))
+                      (< 0.0 (- 0.0 0.0)))))
+      (a!17 (not (and (not (or a!14 a!14))
+                      (> 0.0 (- 0.0 0.0))
+                      (> 0.0 (- 0.0 0.0)))))
+      (a!18 (and (not (or a!14 a!14)) (< 0.0 (- 0.0 0.0)) (< 0.0 (- 0.0 0.0))))
+      (a!19 (and (not (or a!14 a!14)) (< 0.0 (- 0.0 0.0)) (> 0.0 (- 0.0 0.0))))
+      (a!24 (not (and (not a!4) (> 0.0 (- r.w.x 0.0)) (< 0.0 (- r.w.y 0.0)))))
+      (a!26 (not (and (not a!4) (> 0.0 (- r.w.x 0.0)) (> 0.0 (- r.w.y 0.0)))))
+      (a!32 (not (and (not a!31) (> 0.0 (- r.c.x 0.0)) (< 0.0 (- r.c.y 0.0)))))
+      (a!34 (not (and (not a!31) (> 0.0 (- r.c.x 0.0)) (> 0.0 (- r.c.y 0.0)))))
+      (a!35 (and (not a!31) (< 0.0 (- r.c.x 0.0)) (< 0.0 (- r.c.y 0.0))))
+      (a!36 (and (not a!31) (< 0.0 (- r.c.x 0.0)) (> 0.0 (- r.c.y 0.0)))))
+(let ((a!7 (or a!5 (and a!3 (< 0.0 (- r.w.x 0.0))) a!6))
+      (a!20 (or a!18 (and a!13 (< 0.0 (- 0.0 0.0))) a!19))
+      (a!37 (or a!35 (and a!10 (< 0.0 (- r.c.x 0.0))) a!36)))
+(let ((a!23 (and a!15
+                 a!16
+                 a!17
+                 (=> a!20 (>= (- 0.0 0.0) (- r.w.x 0.0)))
+                 (not (and a!21 a!18))
+                 (not (and a!21 a!19))
+                 (not (> 4.0 a!22))))
+      (a!29 (and a!24
+                 a!25
+                 a!26
+                 (=> a!7 (>= (- r.w.x 0.0) (- r.w.x 0.0)))
+                 (not (and a!27 a!5))
+                 (not (and a!27 a!6))
+                 (not (> 4.0 a!28))))
+      (a!39 (and a!32
+                 a!33
+                 a!34
+                 (=> a!37 (>= (- r.c.x 0.0) (- r.w.x 0.0)))
+                 (not (and a!9 a!35))
+                 (not (and a!9 a!36))
+                 (not (> 4.0 a!38)))))
+(let ((a!40 (and (not (and (= 0.0 r.w.x) (= 0.0 r.w.y)))
+                 a!1
+                 a!7
+                 (not (and (= 0.0 r.c.x) (= 0.0 r.c.y)))
+                 a!8
+                 a!9
+                 (and a!10 (< 0.0 (- r.c.x 0.0)))
+                 a!11
+                 (or (and (= 0.0 0.0) (= 0.0 0.0)) (=> a!12 a!23))
+                 (or (and (= 0.0 r.w.x) (= 0.0 r.w.y)) (=> a!1 a!29))
+                 (or (and (= 0.0 r.c.x) (= 0.0 r.c.y)) (=> a!8 a!39)))))
+  (=> r.case0 a!40))))))))
+(assert (or r.case0))
+(assert (and (>= 0.0 r.w.x) (>= 0.0 r.c.x) (distinct 0.0 (+ 0.0 (- r.w.x 0.0)))))
+(check-sat)
