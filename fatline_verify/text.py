@@ -507,11 +507,27 @@ def short_reason(reason: str, width: int = SHORT_REASON) -> str:
     return cut + "…"
 
 
-def prove_short_row(r: dict[str, Any]) -> list[str]:
+PROVE_WIDTH = 140
+"""Characters a line of the default ``fatline prove`` table takes at most (a long obligation name
+leaves its reason less room, never fewer than 24 characters)."""
+
+
+def prove_short_row(r: dict[str, Any], width: int = SHORT_REASON) -> list[str]:
     """One ``results.json`` row as the default table shows it: obligation, verdict, seconds, a short reason."""
     from .prove.tasks import row_key
 
-    return [row_key(r), r["verdict"], f"{r['seconds']:.1f}", short_reason(r["reason"])]
+    return [row_key(r), r["verdict"], f"{r['seconds']:.1f}", short_reason(r["reason"], width)]
+
+
+def prove_short_rows(results: list[dict[str, Any]]) -> list[list[str]]:
+    """Every row as :func:`prove_short_row`, the reasons cut so a line fits :data:`PROVE_WIDTH`."""
+    from .prove.tasks import row_key
+
+    key = max((len(row_key(r)) for r in results), default=0)
+    verdict = max([len("verdict"), *(len(r["verdict"]) for r in results)])
+    seconds = max([len("seconds"), *(len(f"{r['seconds']:.1f}") for r in results)])
+    width = max(24, min(SHORT_REASON, PROVE_WIDTH - key - verdict - seconds - 6))
+    return [prove_short_row(r, width) for r in results]
 
 
 def prove_counts(results: list[dict[str, Any]]) -> list[str]:
@@ -570,7 +586,7 @@ def prove_lines(model: Any, results: list[dict[str, Any]], out: Any, *, verbose:
         lines += table([*PROVE_COLUMNS, "decided by"], rows)
         lines += ["", f"Columns: {PROVE_ROBOTS_LEGEND}."]
     else:
-        lines += table(PROVE_SHORT_COLUMNS, [prove_short_row(r) for r in results])
+        lines += table(PROVE_SHORT_COLUMNS, prove_short_rows(results))
         traces = sorted({str(r["trace"]).rsplit("/", 1)[0] for r in results if r.get("trace")})
         if traces:
             lines += ["", f"counterexample traces in {', '.join(traces)} (fatline replay TRACE -v plays one)"]

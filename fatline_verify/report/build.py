@@ -296,7 +296,9 @@ def _saved_prove(model: Model, proofs: Path) -> dict[str, Any] | None:
     path = proofs / "results.json"
     if is_output(path, Kind.PROVE):
         ProofResults(model, proofs, proofs / "traces", slots=DEFAULT_SLOTS, timeout=DEFAULT_TIMEOUT)  # checks it
-        return load_json(path, what=path.as_posix(), expected="the results.json fatline prove wrote")
+        doc = load_json(path, what=path.as_posix(), expected="the results.json fatline prove wrote")
+        shown = {str(lemma) for lemma in REPORTED}  # as cached_prove: the report's lemmas only
+        return {**doc, "obligations": [r for r in doc.get("obligations", []) if r.get("lemma") in shown]}
     return _refusal(model, proofs, DEFAULT_SLOTS, DEFAULT_TIMEOUT)
 
 

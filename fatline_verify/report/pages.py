@@ -72,6 +72,7 @@ th { background: #f3f3f3; }
 .PROVED { background: #c8ecc8; } .INCONCLUSIVE { background: #fff4d6; }
 table.matrix { width: 100%; font-size: 0.8em; }
 .matrix th { font-weight: 600; }
+.matrix th:not(.group) { white-space: nowrap; }
 .matrix th, .matrix td { padding: 0.3em 0.35em; }
 .matrix th.group { text-align: center; }
 .matrix td.notrun { color: #555; font-style: italic; text-align: center; }
