@@ -49,9 +49,23 @@ def _kinds(text: str | None) -> frozenset[Any]:
     return PROVED | frozenset(Kind(t) for t in names)
 
 
+
+def refuse_unpacked(lo: int, hi: int, window: tuple[int, int]) -> None:
+    """Refuse, before any work, a robot count whose states do not pack into 63 bits in ``window`` (the
+    initial configurations are enumerated as the checker's keys): ``reach`` and ``synth`` alike."""
+    from ..model.lattice import KeyCodec
+
+    for n in range(lo, hi + 1):
+        try:
+            KeyCodec(n, window)
+        except ValueError:
+            raise InvalidInput(
+                f"window={window[0]}x{window[1]} with robots={n}: a state does not pack into 63 bits; expected a "
+                "smaller window or fewer robots"
+            ) from None
+
 def cmd_reach(args: argparse.Namespace) -> int:
     from ..check.checker import guard_starts, validate_resources
-    from ..model.lattice import KeyCodec
     from ..repair.reach import reach, refuse, starts
     from ..repair.reach_text import reach_lines, reach_to_json
     from ..resources import default_max_memory
@@ -63,14 +77,7 @@ def cmd_reach(args: argparse.Namespace) -> int:
     refuse(model)
     lo, hi = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else model.bounds.robots
     window = parse_window(args.window, error=InvalidInput) if args.window is not None else model.bounds.window
-    for n in range(lo, hi + 1):  # the initial configurations are enumerated as the checker's keys
-        try:
-            KeyCodec(n, window)
-        except ValueError:
-            raise InvalidInput(
-                f"window={window[0]}x{window[1]} with robots={n}: a state does not pack into 63 bits; expected a "
-                "smaller window or fewer robots"
-            ) from None
+    refuse_unpacked(lo, hi, window)
     validate_resources(model, (lo, hi), window)
     guard_starts(model, (lo, hi), window, default_max_memory(), BYTES_PER_START, "half this machine's memory")
     empty = [n for n in range(lo, hi + 1) if not starts(model, n, window)]

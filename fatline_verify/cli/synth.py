@@ -23,7 +23,7 @@ from .common import (
     model_arg,
     nonempty,
 )
-from .reach import DEFAULT_MODEL, MAX_Q, _kinds
+from .reach import DEFAULT_MODEL, MAX_Q, _kinds, refuse_unpacked
 
 MAX_ROBOTS = 5
 """Every configuration the table may meet is a state of the search, in Python: 4 robots in 9x9 take minutes;
@@ -45,7 +45,6 @@ def _scheduler(text: str | None, model: Any) -> Any:
 
 
 def cmd_synth(args: argparse.Namespace) -> int:
-    from ..model.lattice import KeyCodec
     from ..repair.reach import refuse, starts
     from ..synth.certificate import certify
     from ..synth.encode import SOLVERS, synthesise
@@ -65,14 +64,7 @@ def cmd_synth(args: argparse.Namespace) -> int:
             f"robots={hi}: expected at most {MAX_ROBOTS} (every reachable configuration is in the formula)"
         )
     window = parse_window(args.window, error=InvalidInput) if args.window is not None else model.bounds.window
-    for n in range(lo, hi + 1):
-        try:
-            KeyCodec(n, window)
-        except ValueError:
-            raise InvalidInput(
-                f"window={window[0]}x{window[1]} with robots={n}: a state does not pack into 63 bits; expected a "
-                "smaller window or fewer robots"
-            ) from None
+    refuse_unpacked(lo, hi, window)
     empty = [n for n in range(lo, hi + 1) if not starts(model, n, window)]
     if empty:
         raise InvalidInput(
