@@ -85,3 +85,15 @@ def test_a_certificate_without_its_records_is_refused(proved, tmp_path):
     unmarked = _copy(proved, tmp_path, lambda t: t.replace("; cut relaxed!", "; relaxed!", 1))
     got = check_certificate(unmarked, cvc5_check=False)
     assert not got.ok and "'; cut' marks" in got.why
+
+
+def test_the_command_checks_with_two_processes(proved, capsys):
+    assert certify.main(["--jobs", "2", str(proved.parent)]) == 0
+    assert "1 of 1 certificates check" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("value", ["0", "two", "-1"])
+def test_the_command_refuses_a_bad_jobs_count(value, tmp_path, capsys):
+    assert certify.main(["--jobs", value, str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert f"--jobs {value}" in err and "positive whole number" in err and len(err.strip().splitlines()) == 1

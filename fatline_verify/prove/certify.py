@@ -1,35 +1,83 @@
-"""``python -m fatline_verify.prove.certify [DIR...]``: check every linear certificate
+"""``python -m fatline_verify.prove.certify [--jobs N] [DIR...]``: check every linear certificate
 (``*.linear.smt2``) under the directories (default ``proofs``) against the obligation file beside it,
 from the two files alone (:mod:`fatline_verify.prove.smt.certificates`): the relaxed part is the
 obligation, every cut is implied by the atom its Boolean stands for, and cvc5 finds the linear problem
-unsat. Prints one line per certificate that fails and a count; exit 0 if every one passed, 1 if one
-failed, 2 for a directory that does not exist."""
+unsat. Prints one line per certificate that fails and a count, and on stderr a progress line every 10
+seconds; ``--jobs N`` checks N certificates at once (each check is independent). Exit 0 if every one
+passed, 1 if one failed, 2 for a bad argument (a directory that does not exist, a bad ``--jobs``),
+before any work."""
 
 from __future__ import annotations
 
 import sys
+import time
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
+from typing import Callable, Iterable, Iterator, TypeVar
+
+T = TypeVar("T")
+R = TypeVar("R")
+
+PROGRESS_EVERY = 10.0
+"""Seconds between progress lines on stderr."""
+
+
+def _check(path: Path) -> tuple[str, bool, str]:
+    from .smt.certificates import check_certificate
+
+    got = check_certificate(path)
+    return got.path, got.ok, got.why
+
+
+def _usage(message: str) -> int:
+    print(f"fatline: certify: {message}", file=sys.stderr)
+    return 2
 
 
 def main(argv: list[str] | None = None) -> int:
-    from .smt.certificates import check_certificate
-
-    dirs = [Path(a) for a in (sys.argv[1:] if argv is None else argv)] or [Path("proofs")]
+    args = list(sys.argv[1:] if argv is None else argv)
+    jobs = 1
+    if "--jobs" in args:
+        i = args.index("--jobs")
+        value = args[i + 1] if i + 1 < len(args) else ""
+        if not value.isdigit() or int(value) < 1:
+            return _usage(f"--jobs {value or '(missing)'}: expected a positive whole number of processes")
+        jobs = int(value)
+        del args[i : i + 2]
+    dirs = [Path(a) for a in args] or [Path("proofs")]
     for d in dirs:
         if not d.is_dir():
-            print(
-                f"fatline: certify: {d.as_posix()}: no such directory; expected a directory of proofs", file=sys.stderr
-            )
-            return 2
+            return _usage(f"{d.as_posix()}: no such directory; expected a directory of proofs")
     files = sorted(p for d in dirs for p in d.rglob("*.linear.smt2"))
-    failed = 0
-    for path in files:
-        got = check_certificate(path)
-        if not got.ok:
-            failed += 1
-            print(f"FAILED {got.path}: {got.why}")
+    failed, done, start, last = 0, 0, time.monotonic(), time.monotonic()
+    with ProcessPoolExecutor(jobs) if jobs > 1 else _Inline() as pool:
+        for where, ok, why in pool.map(_check, files):
+            done += 1
+            if not ok:
+                failed += 1
+                print(f"FAILED {where}: {why}", flush=True)
+            if time.monotonic() - last >= PROGRESS_EVERY:
+                last = time.monotonic()
+                print(
+                    f"certify: {done} of {len(files)} checked, {failed} failed, {last - start:.0f} s",
+                    file=sys.stderr,
+                    flush=True,
+                )
     print(f"{len(files) - failed} of {len(files)} certificates check from their own files (atoms, cuts, cvc5)")
     return 1 if failed else 0
+
+
+class _Inline:
+    """``map`` in this process (``--jobs 1``): no pool to start."""
+
+    def __enter__(self) -> _Inline:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        return None
+
+    def map(self, fn: Callable[[T], R], items: Iterable[T]) -> Iterator[R]:
+        return (fn(x) for x in items)
 
 
 if __name__ == "__main__":
