@@ -161,7 +161,7 @@ def compile_times() -> tuple[tuple[float, float], tuple[float, float]]:
         a, b = out.stdout.split()
         return float(a), float(b)
 
-    for f in list(cache.glob("compiled.*.nbi")) + list(cache.glob("compiled.*.nbc")):
+    for f in [f for stem in ("compiled", "compiled_common") for f in cache.glob(f"{stem}.*.nb[ic]")]:
         f.unlink()
     cold = probe()
     warm = probe()

@@ -1,4 +1,5 @@
-"""Shared helpers: models with some readings changed."""
+"""Shared helpers: models with some readings changed, the committed reports, the artefacts the hostile-state
+tests tamper with."""
 
 from __future__ import annotations
 
@@ -11,7 +12,6 @@ import pytest
 
 from fatline_verify.model.config import Model, Parameters
 from fatline_verify.model.options import Options
-
 
 os.environ["FATLINE_ANSWERS"] = "off"  # no test reads or writes answers kept by other runs (tests/test_store.py: on)
 
@@ -41,3 +41,11 @@ def committed_reports() -> list[Any]:
 
     root = Path(__file__).resolve().parent.parent
     return sorted(_earlier([], root / "reports", root / "proofs"), key=lambda r: r.model.name)
+
+
+@pytest.fixture(scope="session")
+def made(tmp_path_factory) -> Path:
+    """The artefacts the hostile-state tests tamper with, made once (:func:`tests.hostile.make_artefacts`)."""
+    from tests.hostile import make_artefacts
+
+    return make_artefacts(tmp_path_factory.mktemp("made"))

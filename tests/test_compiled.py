@@ -308,17 +308,17 @@ def test_hash_table_grows_and_keeps_every_row():
 def test_goal_and_connectivity_kernels_equal_the_array_code():
     """The per-state kernels against :func:`goal_positions` and :func:`connected_within`, on small
     windows where collinear, coincident and disconnected states are common."""
-    from fatline_verify.check.compiled import _GOALS, _connected, _goal
+    from fatline_verify.check.compiled_common import GOALS, at_goal, connected
     from fatline_verify.model.lattice import connected_within, goal_positions
 
     rng = np.random.default_rng(7)
     scratch = np.zeros(8, dtype=np.int64)
     for n in range(1, 9):
         states = rng.integers(0, 4, size=(300, n, 2)).astype(np.int64)
-        for goal, kind in _GOALS.items():
+        for goal, kind in GOALS.items():
             for width in (1, 2, 4):
                 want = goal_positions(states, goal, width)
-                assert [_goal(s, kind, width) for s in states] == want.tolist()
+                assert [at_goal(s, kind, width) for s in states] == want.tolist()
         for view2 in (1, 2, 4, 9):
             want = connected_within(states, view2)
-            assert [_connected(s, view2, scratch) for s in states] == want.tolist()
+            assert [connected(s, view2, scratch) for s in states] == want.tolist()

@@ -5,7 +5,6 @@ byte; and the multi-word key-set kernels of ``check/keys.py`` against numpy."""
 from __future__ import annotations
 
 import json
-from dataclasses import fields as dataclass_fields
 
 import numpy as np
 import pytest
@@ -20,18 +19,16 @@ from fatline_verify.check.fast_async import FastAsyncEngine
 from fatline_verify.check.initial import initial_array
 from fatline_verify.check.search import explore
 from fatline_verify.model.config import load_model
-from fatline_verify.schedulers.base import Expansion, KeyExpansion
+from fatline_verify.schedulers.base import KeyExpansion
 from fatline_verify.schedulers.systems import system_for
+from tests.async_engines import (
+    assert_explores_alike,
+    assert_same,
+    assert_wide_swarm_explores_alike,
+    asynchronous,
+    reading_cases,
+)
 from tests.conftest import make_model
-from tests.test_explore import FIELDS
-from tests.test_fast_async import READINGS, asynchronous
-
-
-def assert_same(a: Expansion | KeyExpansion, b: Expansion | KeyExpansion) -> None:
-    for f in dataclass_fields(a):
-        x, y = getattr(a, f.name), getattr(b, f.name)
-        assert x.dtype == y.dtype and x.shape == y.shape, f.name
-        assert np.array_equal(x, y), f.name
 
 
 def composed(system, engine, keys, codec) -> KeyExpansion:
@@ -45,29 +42,9 @@ def composed(system, engine, keys, codec) -> KeyExpansion:
     return KeyExpansion(ex.enabled, ex.goal, ex.src, ex.action, key, ex.flags, fits, ex.exact)
 
 
-def _cases():
-    """Every reading at K = 1, 2, 3; the default tier has K = 2 for every reading and K = 3 for the
-    default readings and non-rigid motion (the ones it changes most)."""
-    for readings in READINGS:
-        name = ",".join(f"{k}={v}" for k, v in readings.items()) or "default"
-        for K in (1, 2, 3):
-            slow = K != 2 and readings not in ({}, {"motion": "non-rigid"})
-            yield pytest.param(readings, K, id=f"{name}-{K}", marks=[pytest.mark.slow] if slow else [])
-
-
-@pytest.mark.parametrize(("readings", "K"), list(_cases()))
+@pytest.mark.parametrize(("readings", "K"), list(reading_cases((2,))))
 def test_compiled_async_explores_like_fast_and_scalar(readings, K):
-    model = asynchronous(make_model(**readings), K)
-    system = system_for(model)
-    for n, w in [(2, 6), (3, 6)]:
-        init = system.initial(initial_array(n, (w, w), model))
-        a = explore(system, init, (w, w), engine_for(system, "scalar"))
-        b = explore(system, init, (w, w), engine_for(system, "fast"))
-        c = explore(system, init, (w, w), engine_for(system, "compiled"))
-        assert c.engine == "compiled" and a.n_states > 10
-        for f in FIELDS:
-            assert np.array_equal(getattr(a, f), getattr(c, f)), f
-            assert np.array_equal(getattr(b, f), getattr(c, f)), f
+    assert_explores_alike(readings, K, ["scalar", "fast", "compiled"])
 
 
 @pytest.mark.parametrize(("K", "readings"), [(2, {}), (3, {"motion": "non-rigid", "path": "horizontal-then-vertical"})])
@@ -128,17 +105,8 @@ def test_compiled_is_the_async_default_engine():
 def test_wide_snapshots_are_delegated_to_the_fast_engine():
     """Eight robots seeing 12 units of 1/3 each way: a snapshot does not pack into 63 bits; the compiled
     engine hands the batch to the fast engine, which packs it in bytes."""
-    model = asynchronous(make_model(), 3)
-    system = system_for(model)
-    engine = CompiledAsyncEngine(system)
+    engine = assert_wide_swarm_explores_alike(CompiledAsyncEngine)
     assert not engine.packs(8) and engine.packs(4)
-    spots = [(0, 0), (0, 3), (0, 6), (3, 1), (3, 4), (6, 0), (6, 3), (6, 6)]
-    init = system.initial(np.array([sorted(spots)], dtype=np.int64))
-    a = explore(system, init, (9, 9), engine_for(system, "scalar"), max_states=150, after_violation="continue")
-    b = explore(system, init, (9, 9), engine, max_states=150, after_violation="continue")
-    assert a.truncated
-    for f in FIELDS:
-        assert np.array_equal(getattr(a, f), getattr(b, f)), f
 
 
 def test_a_sweep_past_its_packing_is_the_fast_engines_error():

@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import json
+import re
 import signal
 import subprocess
 import sys
 import time
 from pathlib import Path
+from typing import Any
 
 from fatline_verify.model.config import load_model
 from fatline_verify.prove.prover import tasks_for
@@ -15,12 +17,12 @@ from fatline_verify.prove.prover import tasks_for
 ROOT = Path(__file__).resolve().parent.parent
 
 
-def _start(*argv: str, cwd: Path) -> subprocess.Popen[str]:
+def _start(*argv: str, cwd: Path, stderr: Any = subprocess.PIPE) -> subprocess.Popen[str]:
     return subprocess.Popen(
         [sys.executable, "-m", "fatline_verify.cli", *argv],
         cwd=cwd,
         stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
+        stderr=stderr,
         text=True,
     )
 
@@ -32,7 +34,7 @@ def _interrupt(proc: subprocess.Popen[str]) -> tuple[int, str, str, float]:
     return proc.returncode, out, err, time.monotonic() - t0
 
 
-def _wait_for(predicate, proc: subprocess.Popen[str], limit: float = 120.0) -> None:
+def _wait_for(predicate, proc: subprocess.Popen[str], limit: float = 300.0) -> None:
     t0 = time.monotonic()
     while not predicate():
         assert proc.poll() is None, proc.communicate()
@@ -42,11 +44,15 @@ def _wait_for(predicate, proc: subprocess.Popen[str], limit: float = 120.0) -> N
 
 def test_check_interrupted_keeps_the_finished_robot_counts(tmp_path):
     out = tmp_path / "check.json"
-    proc = _start("check", "--robots", "2..7", "--json", str(out), "--traces", str(tmp_path / "t"), cwd=tmp_path)
-    # n = 2..5 take a few seconds; n = 7 takes minutes, so the interrupt lands in n = 6 or 7.
-    time.sleep(6)
-    assert proc.poll() is None, proc.communicate()
-    code, stdout, err, seconds = _interrupt(proc)
+    log = tmp_path / "stderr.txt"
+    with log.open("w") as stderr:
+        argv = ["check", "--robots", "2..7", "--json", str(out), "--traces", str(tmp_path / "t")]
+        proc = _start(*argv, cwd=tmp_path, stderr=stderr)
+        # n = 2..5 take a few seconds, n = 6 tens, n = 7 minutes: the interrupt lands once a progress line
+        # (one every few seconds off a terminal) says the search of 5, 6 or 7 robots is under way.
+        _wait_for(lambda: re.search(r"\bn=[5-7]:", log.read_text()) is not None, proc)
+        code, stdout, _, seconds = _interrupt(proc)
+    err = log.read_text()
     assert code == 130, err
     assert seconds < 3
     assert "interrupted" in err.lower() or "INTERRUPTED" in stdout

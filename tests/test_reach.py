@@ -230,6 +230,8 @@ def test_models_without_proved_legs_or_another_goal_are_refused(tmp_path, capsys
         (["reach", "repaired", "--q", "0"], "q='0'"),
         (["reach", "repaired", "--robots", "0"], "robots='0'"),
         (["reach", "repaired", "--window", "9"], "window='9'"),
+        (["reach", "repaired", "--max-memory", "lots"], "max-memory='lots'"),
+        (["reach", "repaired", "--robots", "3..4", "--window", "9x9", "--max-memory", "1M"], "robots=4 window=9x9"),
     ],
 )
 def test_cli_bad_input_is_one_line_and_exit_2(argv, needle, capsys):

@@ -13,6 +13,7 @@ from hypothesis import strategies as st
 from fatline_verify.lemmas.properties import Verdict
 from fatline_verify.model.config import load_model
 from fatline_verify.prove.prover import isolated, prove_global, prove_spec, tasks_for
+from fatline_verify.prove.smt.certificates import cvc5_answer
 from fatline_verify.prove.smt.obligations import evaluate, recheck_file
 from fatline_verify.rules.registry import decide
 from fatline_verify.trace.traces import check_replay
@@ -48,22 +49,10 @@ def test_encoding_agrees_with_decide(snapshot, opts):
 
 
 def _cvc5(path):
-    """cvc5's answer to a written file (its own parser: the file alone is the obligation)."""
-    cvc5 = pytest.importorskip("cvc5")
-    tm = cvc5.TermManager()
-    solver = cvc5.Solver(tm)
-    solver.setOption("tlimit-per", "60000")
-    symbols = cvc5.SymbolManager(tm)
-    parser = cvc5.InputParser(solver, symbols)
-    parser.setFileInput(cvc5.InputLanguage.SMT_LIB_2_6, str(path))
-    answer = None
-    while True:
-        cmd = parser.nextCommand()
-        if cmd.isNull():
-            break
-        said = cmd.invoke(solver, symbols)
-        answer = said.strip() or answer
-    return answer
+    """cvc5's answer to a written file, through the tool's own reader (its parser: the file alone is the
+    obligation)."""
+    pytest.importorskip("cvc5")
+    return cvc5_answer(path)
 
 
 def test_a_proved_obligation_stays_unsat_from_its_file_for_both_solvers(tmp_path):

@@ -187,6 +187,10 @@ def test_cli_unsat_exits_1_and_names_the_core(capsys):
         (["--robots", "2..9"], "robots=9"),
         (["--with", "diagonal"], "with='diagonal'"),
         (["paper"], "paper"),
+        (["--max-memory", "lots"], "max-memory='lots'"),
+        (["--window", "3x3", "--robots", "3"], "no initial configuration of 3 robots fits"),
+        (["--window", "99999x99999", "--robots", "2"], "does not pack into 63 bits"),
+        (["--robots", "2..4", "--window", "9x9", "--max-memory", "1M"], "robots=3 window=9x9: more than"),
     ],
 )
 def test_cli_bad_input_is_one_line(capsys, argv, fragment):

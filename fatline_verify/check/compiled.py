@@ -41,15 +41,14 @@ from numba import njit
 from ..lemmas.properties import Lemma
 from ..model.config import Model
 from ..model.lattice import KeyCodec, RankedCodec
-from ..model.options import Goal
 from ..rules.registry import decider
 from ..schedulers.base import Expansion, KeyExpansion
+from .compiled_common import GOALS, Events, Rows, at_goal, connected, settle
 from .fast import pair_collides, snapshot_cells
 from .hashtable import HashTable, distinct, find
 from .keys import snapshot_key
 
 _CORNER_NONE, _CORNER_H, _CORNER_V = 0, 1, 2
-_GOALS = {Goal.VERTICAL_LINE: 0, Goal.ANY_LINE: 1, Goal.LINE_MEETS_DISCS: 2}
 
 
 # --- per-state analysis -------------------------------------------------------------------------
@@ -91,81 +90,6 @@ def _decode(keys: np.ndarray, n: int, bits: int, h: int) -> np.ndarray:
             out[s, k, 0] = code // h
             out[s, k, 1] = code % h
     return out
-
-
-@njit(cache=True)
-def _connected(pos: np.ndarray, view2: int, nbrs: np.ndarray) -> bool:
-    """Whether the graph of pairs at squared distance at most ``view2`` is connected (``nbrs``: scratch)."""
-    n = pos.shape[0]
-    if n <= 1:
-        return True
-    for i in range(n):
-        nbrs[i] = 0
-    for i in range(n):
-        for j in range(i + 1, n):
-            dx = pos[i, 0] - pos[j, 0]
-            dy = pos[i, 1] - pos[j, 1]
-            if dx * dx + dy * dy <= view2:
-                nbrs[i] |= 1 << j
-                nbrs[j] |= 1 << i
-    reach = 1
-    while True:
-        grown = reach
-        for i in range(n):
-            if (reach >> i) & 1:
-                grown |= nbrs[i]
-        if grown == reach:
-            break
-        reach = grown
-    return reach == (1 << n) - 1
-
-
-@njit(cache=True)
-def _goal(pos: np.ndarray, kind: int, width: int) -> bool:
-    """:func:`~fatline_verify.model.lattice.goal_positions` of one state (``kind``: index in ``_GOALS``)."""
-    n = pos.shape[0]
-    if kind == 0:
-        same = True
-        for i in range(1, n):
-            same = same and pos[i, 0] == pos[0, 0]
-        return same
-    if n <= 2:
-        return True
-    distinct = 0
-    for i in range(n):
-        ci = pos[i, 0] * 1_000_003 + pos[i, 1]
-        seen = False
-        for j in range(i):
-            if pos[j, 0] * 1_000_003 + pos[j, 1] == ci:
-                seen = True
-                break
-        if not seen:
-            distinct += 1
-    if distinct < 3:
-        return True
-    for a in range(n):
-        for b in range(n):
-            abx = pos[b, 0] - pos[a, 0]
-            aby = pos[b, 1] - pos[a, 1]
-            if abx == 0 and aby == 0:
-                continue
-            limit = width * width * (abx * abx + aby * aby)
-            line, nonneg, nonpos, near = True, True, True, True
-            for c in range(n):
-                cross = abx * (pos[c, 1] - pos[a, 1]) - aby * (pos[c, 0] - pos[a, 0])
-                if cross != 0:
-                    line = False
-                if cross < 0:
-                    nonneg = False
-                if cross > 0:
-                    nonpos = False
-                if cross * cross > limit:
-                    near = False
-            if kind == 1 and line:
-                return True
-            if kind == 2 and (nonneg or nonpos) and near:
-                return True
-    return False
 
 
 @njit(cache=True)
@@ -228,8 +152,8 @@ def _analyse(
                 dest[s, i, 0] = dtab[slot, 1]
                 dest[s, i, 1] = dtab[slot, 2]
                 corner[s, i] = dtab[slot, 3]
-        conn[s] = _connected(states[s], view2, nbrs)
-        goal[s] = _goal(states[s], goal_kind, width)
+        conn[s] = connected(states[s], view2, nbrs)
+        goal[s] = at_goal(states[s], goal_kind, width)
         if st == 0:
             e = 0
             for i in range(n):
@@ -337,7 +261,7 @@ def _expand(
                 if coll[s, p, cs] == 1:
                     f |= flag_collision
                     break
-            if conn[s] and not _connected(a, view2, nbrs):
+            if conn[s] and not connected(a, view2, nbrs):
                 f |= flag_connectivity
             if crossed:
                 f |= flag_rma
@@ -395,7 +319,7 @@ class _Tables:
 
 
 @dataclass(slots=True)
-class _Analysis:
+class _Analysis(Rows):
     """Pass 1's per-state results: decisions, enabled robots, pair answers (``coll[s, p, case]``: 1
     collides, 0 not, -1 not needed or not known yet), connectivity, goal, and what is still missing."""
 
@@ -419,10 +343,6 @@ class _Analysis:
             np.zeros(m, dtype=np.int8),
         )
 
-    def put(self, rows: np.ndarray, other: _Analysis) -> None:
-        for name in self.__slots__:
-            getattr(self, name)[rows] = getattr(other, name)
-
 
 class CompiledEngine:
     """Compiled engine of the round systems; produces exactly the fast (and scalar) engine's expansion."""
@@ -439,7 +359,7 @@ class CompiledEngine:
         self.reach = isqrt(self.view2)
         self.side = 2 * self.reach + 1
         self.cell_bits = int(self.side * self.side).bit_length()
-        self.goal_kind = _GOALS[model.options.goal]
+        self.goal_kind = GOALS[model.options.goal]
         self.width = 2 * model.radius
         self.decisions = HashTable(3)  # dx, dy, corner kind
         self.pairs = HashTable(1)  # collides?
@@ -521,9 +441,7 @@ class CompiledEngine:
         self.pairs.insert(keys, rows)
 
     # --- pass 1 ---------------------------------------------------------------------------------
-    def _run_analyse(
-        self, states: np.ndarray, tables: _Tables
-    ) -> tuple[_Analysis, int, int, int, np.ndarray, np.ndarray]:
+    def _run_analyse(self, states: np.ndarray, tables: _Tables) -> tuple[_Analysis, tuple[np.ndarray, np.ndarray, int]]:
         m, n, _ = states.shape
         out = _Analysis.empty(m, n, len(tables.pi))
         miss_snap = np.empty(m * n, dtype=np.int64)
@@ -536,70 +454,55 @@ class CompiledEngine:
             out.dest, out.corner, out.enabled, out.coll, out.conn, out.goal, out.status,
             miss_snap, miss_pair,
         )  # fmt: skip
-        return out, int(n_snap), int(n_pair), int(err), miss_snap, miss_pair
+        return out, (miss_snap[:n_snap], miss_pair[:n_pair], int(err))
 
     def _analyse(self, states: np.ndarray) -> tuple[_Analysis, _Tables]:
         """Pass 1 to completion: every decision and needed pair answer known (the model asked for the
         keys never seen), or the fast engine's error."""
-        m, n, _ = states.shape
+        n = states.shape[1]
         if self.cell_bits * max(n - 1, 1) > 63:
             raise ValueError(f"view radius {self.reach} with {n} robots does not pack snapshots into 63 bits")
         if n not in self._counts:
             self._remember(n)
         tables = self._tables_for(n)
-        result, n_snap, n_pair, err, miss_snap, miss_pair = self._run_analyse(states, tables)
-        rows = np.arange(m)
-        for _ in range(3):  # decisions, then the pair keys that depend on them, then complete
-            if n_snap:
-                self._learn_decisions(miss_snap[:n_snap], n)
+
+        def learn(misses: tuple[np.ndarray, np.ndarray, int]) -> None:
+            snaps, pairs, err = misses
+            if len(snaps):
+                self._learn_decisions(snaps, n)
             if err:
                 raise ValueError(
                     "a pair offset or move exceeds 127 lattice units; the compiled engine packs 8 bits each"
                 )
-            if n_pair:
-                self._learn_pairs(miss_pair[:n_pair])
-            redo = rows[np.flatnonzero(result.status[rows])]
-            if not len(redo):
-                return result, tables
-            again, n_snap, n_pair, err, miss_snap, miss_pair = self._run_analyse(states[redo], tables)
-            result.put(redo, again)
-            rows = redo
-        raise AssertionError("the compiled engine's caches did not settle")  # pragma: no cover
+            if len(pairs):
+                self._learn_pairs(pairs)
+
+        # decisions, then the pair keys that depend on them, then complete
+        return settle(states, lambda s: self._run_analyse(s, tables), learn, 3, "compiled"), tables
 
     # --- pass 2 ---------------------------------------------------------------------------------
-    def _run_expand(
-        self, states: np.ndarray, an: _Analysis, tables: _Tables, codec: KeyCodec | None
-    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        m, n, _ = states.shape
-        counts = tables.vcount[an.enabled]
-        offsets = np.zeros(m + 1, dtype=np.int64)
-        np.cumsum(counts, out=offsets[1:])
-        t = int(offsets[-1])
-        src = np.empty(t, dtype=np.int64)
-        action = np.empty(t, dtype=np.int64)
-        flags = np.empty(t, dtype=np.int64)
+    def _run_expand(self, states: np.ndarray, an: _Analysis, tables: _Tables, codec: KeyCodec | None) -> Events:
+        n = states.shape[1]
         want_keys = codec is not None
-        after = np.empty((0 if want_keys else t, n, 2), dtype=np.int64)
-        keys = np.empty(t if want_keys else 0, dtype=np.int64)
-        fits = np.empty(t if want_keys else 0, dtype=np.bool_)
+        ev = Events.empty(tables.vcount[an.enabled], (n, 2), None, want_keys)
         w, h, bits = (codec.w, codec.h, codec.bits) if codec is not None else (0, 0, 0)
         cum = codec.cum if isinstance(codec, RankedCodec) else np.zeros((0, 1), dtype=np.int64)
         _expand(
-            states, an.dest, an.enabled, an.coll, an.conn, tables.vstart, tables.vmasks, offsets,
+            states, an.dest, an.enabled, an.coll, an.conn, tables.vstart, tables.vmasks, ev.offsets,
             tables.pi, tables.pj, self.view2,
             Lemma.NO_COLLISION.flag, Lemma.CONNECTIVITY.flag, Lemma.RMA_FIXED.flag,
             not want_keys, want_keys, w, h, bits, cum,
-            src, action, flags, after, keys, fits,
+            ev.src, ev.action, ev.flags, ev.after, ev.keys, ev.fits,
         )  # fmt: skip
-        return src, action, flags, after, keys, fits
+        return ev
 
     # --- the engine interface -------------------------------------------------------------------
     def expand(self, states: np.ndarray) -> Expansion:
         """The expansion of a batch of array states ``(m, n, 2)``, equal to the fast engine's."""
         states = np.ascontiguousarray(states, dtype=np.int64)
         an, tables = self._analyse(states)
-        src, action, flags, after, _, _ = self._run_expand(states, an, tables, None)
-        return Expansion(an.enabled, an.goal, src, action, after, flags, np.ones(len(src), dtype=bool))
+        ev = self._run_expand(states, an, tables, None)
+        return Expansion(an.enabled, an.goal, ev.src, ev.action, ev.after, ev.flags, np.ones(len(ev.src), dtype=bool))
 
     def expand_keys(self, keys: np.ndarray, codec: KeyCodec) -> KeyExpansion:
         """The expansion of the canonical states with keys ``keys`` in ``codec``, successors as canonical
@@ -611,8 +514,9 @@ class CompiledEngine:
         else:
             states = _decode(keys, codec.n, codec.bits, codec.h)
         an, tables = self._analyse(states)
-        src, action, flags, _, succ, fits = self._run_expand(states, an, tables, codec)
-        return KeyExpansion(an.enabled, an.goal, src, action, succ, flags, fits, np.ones(len(src), dtype=bool))
+        ev = self._run_expand(states, an, tables, codec)
+        exact = np.ones(len(ev.src), dtype=bool)
+        return KeyExpansion(an.enabled, an.goal, ev.src, ev.action, ev.keys, ev.flags, ev.fits, exact)
 
 
 __all__ = ["CompiledEngine", "HashTable", "KeyExpansion", "distinct"]

@@ -28,6 +28,7 @@ whole to the fast engine, which gives the same answer.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -37,7 +38,7 @@ from ..lemmas.properties import Lemma
 from ..model.config import Model
 from ..schedulers.asynchronous import AsyncCodec
 from ..schedulers.base import Expansion, KeyExpansion
-from .compiled import _GOALS, _connected, _goal
+from .compiled_common import GOALS, Events, Rows, at_goal, connected, settle
 from .fast_async import _SWEEP_BITS, FastAsyncEngine
 from .hashtable import HashTable, distinct, find
 from .keys import snapshot_key
@@ -241,8 +242,8 @@ def _expand(
             rma = max(rma, pos[s, i, 0])
             if states[s, i, 0] != states[s, i, 2] or states[s, i, 1] != states[s, i, 3]:
                 moving_any = True
-        goal[s] = (not moving_any) and _goal(states[s, :, 0:2], goal_kind, width)
-        conn = _connected(pos[s], view2, nbrs)
+        goal[s] = (not moving_any) and at_goal(states[s, :, 0:2], goal_kind, width)
+        conn = connected(pos[s], view2, nbrs)
         rma *= K
         for i in range(n):
             moving = states[s, i, 0] != states[s, i, 2] or states[s, i, 1] != states[s, i, 3]
@@ -281,7 +282,7 @@ def _expand(
                             fine[r, 0] = pos[s, r, 0] * K
                             fine[r, 1] = pos[s, r, 1] * K
                         fine[i, 0], fine[i, 1] = nx, ny
-                        if not _connected(fine, view2_fine, nbrs):
+                        if not connected(fine, view2_fine, nbrs):
                             f |= flag_connectivity
                     xb = pos[s, i, 0] * K
                     if nx > rma or (xb == rma and nx != rma):
@@ -325,6 +326,17 @@ def _expand(
 
 
 # --- the engine ---------------------------------------------------------------------------------
+@dataclass(slots=True)
+class _Analysis(Rows):
+    """Pass 1's per-state results: current positions (units of ``1/K``), an idle robot's decision row, a
+    moving robot's next step collides, and what is still missing."""
+
+    pos: np.ndarray
+    dec: np.ndarray
+    hit: np.ndarray
+    status: np.ndarray
+
+
 class CompiledAsyncEngine:
     """Compiled engine of the asynchronous system; produces exactly the fast (and scalar) engine's
     expansion, and the search step from keys to keys."""
@@ -340,7 +352,7 @@ class CompiledAsyncEngine:
         self.rigid: bool = system.rigid
         f = self.fast
         self.view2, self.reach, self.side, self.cell_bits, self.near = f.view2, f.reach, f.side, f.cell_bits, f.near
-        self.goal_kind = _GOALS[self.model.options.goal]
+        self.goal_kind = GOALS[self.model.options.goal]
         self.width = 2 * self.model.radius * self.K
         self.decisions = HashTable(5)  # the fast engine's decision row
         self.sweeps = HashTable(1)  # collides?
@@ -374,18 +386,20 @@ class CompiledAsyncEngine:
         self.sweeps.insert(keys, self.fast._sweep_rows(ox, oy, np.stack([dx, dy], axis=1), corner, k))
 
     # --- pass 1 ---------------------------------------------------------------------------------
-    def _run_analyse(self, states: np.ndarray) -> tuple[np.ndarray, ...]:
+    def _run_analyse(self, states: np.ndarray) -> tuple[_Analysis, tuple[np.ndarray, np.ndarray]]:
         m, n, _ = states.shape
-        pos = np.zeros((m, n, 2), dtype=np.int64)
-        dec = np.zeros((m, n, 5), dtype=np.int64)
-        hit = np.zeros((m, n), dtype=np.int8)
-        status = np.zeros(m, dtype=np.int8)
+        out = _Analysis(
+            np.zeros((m, n, 2), dtype=np.int64),
+            np.zeros((m, n, 5), dtype=np.int64),
+            np.zeros((m, n), dtype=np.int8),
+            np.zeros(m, dtype=np.int8),
+        )
         miss_snap = np.empty(m * n, dtype=np.int64)
         miss_sweep = np.empty(m * n * n, dtype=np.int64)
         d, w = self.decisions, self.sweeps
         n_snap, n_sweep, err = _analyse(
             states, self.K, self.view2, self.reach, self.side, self.cell_bits, self.near,
-            d.slots, d.shift, w.slots, w.shift, pos, dec, hit, status, miss_snap, miss_sweep,
+            d.slots, d.shift, w.slots, w.shift, out.pos, out.dec, out.hit, out.status, miss_snap, miss_sweep,
         )  # fmt: skip
         if err:
             half = 1 << (_SWEEP_BITS - 1)
@@ -393,55 +407,42 @@ class CompiledAsyncEngine:
                 f"a move or offset exceeds {half - 1} units of 1/{self.K}; "
                 f"the fast engine packs {_SWEEP_BITS} bits each"
             )
-        return pos, dec, hit, status, miss_snap[:n_snap], miss_sweep[:n_sweep]
+        return out, (miss_snap[:n_snap], miss_sweep[:n_sweep])
 
-    def _analyse(self, states: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def _analyse(self, states: np.ndarray) -> _Analysis:
         """Pass 1 to completion: every decision and sweep answer known (the model asked for the keys
         never seen)."""
         n = states.shape[1]
-        pos, dec, hit, status, miss_snap, miss_sweep = self._run_analyse(states)
-        rows = np.arange(len(states))
-        for _ in range(2):  # learn, then complete (decisions and sweeps do not depend on each other)
-            if len(miss_snap):
-                self._learn_decisions(miss_snap, n)
-            if len(miss_sweep):
-                self._learn_sweeps(miss_sweep)
-            redo = rows[np.flatnonzero(status[rows])]
-            if not len(redo):
-                return pos, dec, hit
-            p2, d2, h2, status2, miss_snap, miss_sweep = self._run_analyse(states[redo])
-            pos[redo], dec[redo], hit[redo], status[redo] = p2, d2, h2, status2
-            rows = redo
-        raise AssertionError("the compiled ASYNC engine's caches did not settle")  # pragma: no cover
+
+        def learn(misses: tuple[np.ndarray, np.ndarray]) -> None:
+            snaps, sweeps = misses
+            if len(snaps):
+                self._learn_decisions(snaps, n)
+            if len(sweeps):
+                self._learn_sweeps(sweeps)
+
+        # learn, then complete (decisions and sweeps do not depend on each other)
+        return settle(states, self._run_analyse, learn, 2, "compiled ASYNC")
 
     # --- pass 2 ---------------------------------------------------------------------------------
     def _run(self, states: np.ndarray, codec: AsyncCodec | None) -> tuple[np.ndarray, ...]:
         m, n, _ = states.shape
-        pos, dec, hit = self._analyse(states)
+        an = self._analyse(states)
         enabled = np.zeros(m, dtype=np.int64)
         counts = np.zeros(m, dtype=np.int64)
-        _counts(states, dec, self.rigid, enabled, counts)
-        offsets = np.zeros(m + 1, dtype=np.int64)
-        np.cumsum(counts, out=offsets[1:])
-        t = int(offsets[-1])
+        _counts(states, an.dec, self.rigid, enabled, counts)
         want_keys = codec is not None
-        nw = codec.words if codec is not None else 1
+        ev = Events.empty(counts, (n, 6), codec.words if codec is not None else 1, want_keys)
         goal = np.zeros(m, dtype=np.bool_)
-        src = np.empty(t, dtype=np.int64)
-        action = np.empty(t, dtype=np.int64)
-        flags = np.empty(t, dtype=np.int64)
-        exact = np.empty(t, dtype=np.bool_)
-        after = np.empty((0 if want_keys else t, n, 6), dtype=np.int64)
-        keys = np.empty((t if want_keys else 0, nw), dtype=np.int64)
-        fits = np.empty(t if want_keys else 0, dtype=np.bool_)
+        exact = np.empty(len(ev.src), dtype=np.bool_)
         wf, hf, bits, per_word = (codec.wf, codec.hf, codec.bits, codec.per_word) if codec else (1, 1, 1, 1)
         _expand(
-            states, pos, dec, hit, offsets, self.K, self.rigid, self.view2, self.goal_kind, self.width,
+            states, an.pos, an.dec, an.hit, ev.offsets, self.K, self.rigid, self.view2, self.goal_kind, self.width,
             Lemma.NO_COLLISION.flag, Lemma.CONNECTIVITY.flag, Lemma.RMA_FIXED.flag,
             not want_keys, want_keys, wf, hf, bits, per_word,
-            goal, src, action, flags, exact, after, keys, fits,
+            goal, ev.src, ev.action, ev.flags, exact, ev.after, ev.keys, ev.fits,
         )  # fmt: skip
-        return enabled, goal, src, action, flags, exact, after, keys, fits
+        return enabled, goal, ev.src, ev.action, ev.flags, exact, ev.after, ev.keys, ev.fits
 
     # --- the engine interface -------------------------------------------------------------------
     def expand(self, states: np.ndarray) -> Expansion:

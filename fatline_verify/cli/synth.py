@@ -7,7 +7,6 @@ import argparse
 from typing import Any
 
 from ..errors import InvalidInput
-from ..model.config import parse_robots, parse_window
 from ..outputs import Kind, claim_file, write_json
 from ..progress import Progress
 from .common import (
@@ -19,15 +18,18 @@ from .common import (
     add_force,
     add_model_argument,
     emit,
-    integer,
     model_arg,
     nonempty,
 )
-from .reach import DEFAULT_MODEL, MAX_Q, _kinds, refuse_unpacked
+from .family import DEFAULT_MODEL, add_family_arguments, family_bounds, leg_kinds
 
 MAX_ROBOTS = 5
 """Every configuration the table may meet is a state of the search, in Python: 4 robots in 9x9 take minutes;
 beyond 5 the formula outgrows one machine."""
+BYTES_PER_START = 16384
+"""Memory the synthesis holds per initial configuration (its states, views, clauses and the replay: about 12 KB
+measured at 2..4 robots in 9x9 with left and corner legs, 9,929 initial configurations, 115 MB above the
+interpreter's), for the guard before any work."""
 
 
 def _scheduler(text: str | None, model: Any) -> Any:
@@ -45,32 +47,21 @@ def _scheduler(text: str | None, model: Any) -> Any:
 
 
 def cmd_synth(args: argparse.Namespace) -> int:
-    from ..repair.reach import refuse, starts
+    from ..repair.reach import refuse
     from ..synth.certificate import certify
     from ..synth.encode import SOLVERS, synthesise
     from ..synth.text import synth_lines, synth_to_json
 
     model = model_arg(args.model)
-    kinds = _kinds(args.with_)
+    kinds = leg_kinds(args.with_)
     if args.q is not None:
         model = model.with_q(args.q)
     scheduler = _scheduler(args.scheduler, model)
     refuse(model)
     if args.solver not in SOLVERS:
         raise InvalidInput(f"solver={args.solver!r}: expected one of {', '.join(SOLVERS)}")
-    lo, hi = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else model.bounds.robots
-    if hi > MAX_ROBOTS:
-        raise InvalidInput(
-            f"robots={hi}: expected at most {MAX_ROBOTS} (every reachable configuration is in the formula)"
-        )
-    window = parse_window(args.window, error=InvalidInput) if args.window is not None else model.bounds.window
-    refuse_unpacked(lo, hi, window)
-    empty = [n for n in range(lo, hi + 1) if not starts(model, n, window)]
-    if empty:
-        raise InvalidInput(
-            f"window={window[0]}x{window[1]}: no initial configuration of {empty[0]} robots fits it at "
-            f"q={model.parameters.q}; expected a larger --window"
-        )
+    most = (MAX_ROBOTS, "every reachable configuration is in the formula")
+    lo, hi, window = family_bounds(args, model, BYTES_PER_START, most)
     json_path = claim_file(args.json, name="json", kind=Kind.SYNTH, force=args.force) if args.json else None
 
     results = []
@@ -113,13 +104,7 @@ def register(sub: Any) -> None:
     )
     add_model_argument(p, default=DEFAULT_MODEL)
     add_bounds(p)
-    p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")
-    p.add_argument(
-        "--with",
-        dest="with_",
-        metavar="KINDS",
-        help="also what-if legs no proof covers: left, corner (comma-separated)",
-    )
+    add_family_arguments(p)
     p.add_argument("--scheduler", help="centralized or ssync (default: the model's scheduler)")
     p.add_argument(
         "--solver", default=SOLVERS[0], help=f"python-sat solver, one of {', '.join(SOLVERS)} (default: {SOLVERS[0]})"
