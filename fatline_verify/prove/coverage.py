@@ -211,7 +211,8 @@ def _count(rows: list[dict[str, Any]]) -> str:
     for v in ("PROVED", "VIOLATED", "INCONCLUSIVE", "HOLDS_WITHIN_BOUNDS"):
         n = verdicts.count(v)
         if n:
-            out.append(f"{n} {v}" + (f" ({counts_text(rows)})" if v == "PROVED" else ""))
+            split = v == "PROVED" and any(r.get("basis") for r in rows)  # liveness rows carry no basis
+            out.append(f"{n} {v}" + (f" ({counts_text(rows)})" if split else ""))
     return ", ".join(out)
 
 
@@ -309,8 +310,8 @@ def liveness_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemm
     from .tasks import row_key, tasks_for
 
     declared = registry.of(model).liveness
-    if declared is None:
-        return {}
+    if declared is None or not any(r.get("lemma") in LIVENESS for r in rows):
+        return {}  # no liveness rows (a scheduler the prover refuses has no rows at all)
     by_key = {row_key(r): r for r in rows}
     expected = [t.key for t in tasks_for(model, (Lemma.PROGRESS, Lemma.TERMINATION))]
     enabled = [k for k in expected if k.startswith(f"{Lemma.PROGRESS}/")]

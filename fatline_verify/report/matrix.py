@@ -51,8 +51,10 @@ INTRO = (
     "*prove*: the lemma-level verdict from z3 obligations per decision case of the rules (a repaired model: per "
     "pair of leg classes): PROVED (for every swarm size) only when the forms that together imply the lemma are all "
     "PROVED, VIOLATED only by a replayed counterexample of the lemma itself, else NOT PROVED or NOT ENCODED "
-    "(approach is liveness); then the obligations counted by verdict, PROVED split into substantive, immediate "
-    "(true by the rule's construction) and vacuous (the case never fires). "
+    "(approach, a liveness lemma, has no obligation of its own; progress and termination are judged from the "
+    "liveness obligations, enabledness per decision case and a ranking measure, where a rule set declares them: "
+    "an empty cell claims nothing); then the obligations counted by verdict, safety rows' PROVED split into "
+    "substantive, immediate (true by the rule's construction) and vacuous (the case never fires). "
     "Every VIOLATED verdict has a counterexample trace in `traces/` that `fatline replay` reproduces."
 )
 
@@ -95,8 +97,11 @@ LEMMA_CLASS = {"PROVED": "PROVED", "VIOLATED": "VIOLATED", "NOT PROVED": "INCONC
 
 def _prove_cell(report: ModelReport, lemma: str) -> str:
     v = model_lemma_verdicts(report).get(lemma)
-    if v is None or not v.rows:
+    if v is None or not report.prove.get("obligations"):  # no prover run: no claim
         return "<td></td>"
+    if not v.rows:  # NOT ENCODED: no obligation to count
+        title = html.escape(f"{v.verdict}: {v.why}")
+        return f'<td class="{LEMMA_CLASS[v.verdict]}" title="{title}"><strong>{html.escape(v.verdict)}</strong></td>'
     rows = [r for r in report.prove["obligations"] if r["lemma"] == lemma]
     split = f" ({html.escape(counts_text(rows))})" if any(r.get("basis") for r in rows) else ""
     counts = prover_counts(rows, lemma)

@@ -14,6 +14,7 @@ import re
 
 from ..schedulers.systems import system_for
 from ..text import PROVE_ROBOTS_LEGEND, plural, prove_row
+from ..prove.coverage import NOT_ENCODED
 from .against_pages import against_html, against_markdown
 from .data import ModelReport
 from .matrix import cross_model_html, cross_model_markdown, featured
@@ -35,7 +36,11 @@ LEMMA_HEAD = ["lemma", "verdict", "obligations", "why"]
 
 
 def _lemma_rows(report: ModelReport) -> list[list[str]]:
-    return [[v.lemma, v.verdict, v.counts, v.why] for v in model_lemma_verdicts(report).values() if v.rows]
+    return [
+        [v.lemma, v.verdict, v.counts or "none", v.why]
+        for v in model_lemma_verdicts(report).values()
+        if v.rows or v.verdict == NOT_ENCODED
+    ]
 
 
 LEMMA_LEGEND = (

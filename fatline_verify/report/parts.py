@@ -20,7 +20,14 @@ from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, violation_line
 from .data import ModelReport
 
 RANK = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
-PROVER_LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH)
+PROVER_LEMMAS = (
+    Lemma.NO_COLLISION,
+    Lemma.CONNECTIVITY,
+    Lemma.RMA_FIXED,
+    Lemma.APPROACH,
+    Lemma.PROGRESS,
+    Lemma.TERMINATION,
+)
 """The prover's lemmas, in its results order (:data:`fatline_verify.prove.prover.LEMMAS`, without z3)."""
 
 VIEWER_JS = """
@@ -56,10 +63,10 @@ p.legend { font-size: 0.85em; color: #444; }
 th { background: #f3f3f3; }
 .VIOLATED { background: #fde0e0; } .HOLDS_WITHIN_BOUNDS { background: #e3f4e3; }
 .PROVED { background: #c8ecc8; } .INCONCLUSIVE { background: #fff4d6; }
-table.matrix { width: 100%; font-size: 0.8em; }
+table.matrix { width: 100%; font-size: 0.76em; }
 .matrix th { font-weight: 600; }
 .matrix th:not(.group) { white-space: nowrap; }
-.matrix th, .matrix td { padding: 0.3em 0.35em; }
+.matrix th, .matrix td { padding: 0.3em 0.3em; }
 .matrix th.group { text-align: center; }
 .matrix td.notrun { color: #555; font-style: italic; text-align: center; }
 .matrix td.notencoded { color: #555; font-style: italic; }
@@ -111,9 +118,9 @@ def model_lemma_verdicts(report: ModelReport) -> dict[str, LemmaVerdict]:
 def lemma_summary(report: ModelReport, lemma: str) -> str:
     """A matrix cell: the lemma-level verdict, then its rows' counts (PROVED split by basis)."""
     v = model_lemma_verdicts(report).get(lemma)
-    if v is None or not v.rows:
+    if v is None or not report.prove.get("obligations"):  # no prover run (a scheduler it refuses): no claim
         return ""
-    return f"{v.verdict}: {v.counts}"
+    return f"{v.verdict}: {v.counts}" if v.rows else v.verdict  # NOT ENCODED: no rows to count"
 
 
 def _own_rules(report: ModelReport) -> str | None:
