@@ -74,10 +74,12 @@ def synth_lines(
                 f"{rp.rounds_played:,} rounds played, at most {rp.rounds} rounds to a line)"
             )
             continue
-        lines.append(
-            f"{counts_text(r)} robots: UNSAT -- no table of these legs is safe and live from these "
-            f"{len(r.core)} initial configuration{'s' if len(r.core) != 1 else ''} together (each is needed):"
+        which = (
+            "this initial configuration"
+            if len(r.core) == 1
+            else f"these {len(r.core)} initial configurations together (each is needed)"
         )
+        lines.append(f"{counts_text(r)} robots: UNSAT -- no table of these legs is safe and live from {which}:")
         for row in cert.core[:shown]:
             planner = (
                 f"a line in {row.planner} rounds by the family (replayed)"
