@@ -149,7 +149,7 @@ def obligations(model: Model, kinds: frozenset[str], lemmas: tuple[Lemma, ...]) 
     ``reach``'s family makes them (:func:`fatline_verify.repair.reach.left_alone_reach`): the one way the
     command and the tests ask for them, so the prover and the family agree on the legs."""
     family = PROVED_KINDS | {Kind(k) for k in kinds}
-    reach = left_alone_reach(model, family) if Kind.LEFT_ALONE in family else 0
+    reach = left_alone_reach(model, family) if Kind.LEFT_ALONE in family else None
     return whatif_specs(kinds, model.parameters.q, lemmas, reach)
 
 

@@ -100,14 +100,14 @@ class WhatIfSpec:
     q: int
     via: str = REST
     """``bridged-vertical``: the bridge b's leg (or :data:`REST`)."""
-    reach: int = 0
+    reach: int | None = None
     """The longest ``left-alone`` leg in lattice units (:func:`fatline_verify.repair.reach.left_alone_reach`);
-    ``0``: one radius (``q``)."""
+    ``None``: one radius (``q``)."""
 
     @property
     def left_units(self) -> int:
         """The longest ``left-alone`` leg, lattice units."""
-        return self.reach or self.q
+        return self.q if self.reach is None else self.reach
 
     @property
     def key(self) -> str:
@@ -124,11 +124,13 @@ class WhatIfSpec:
         return CORNER in self.kinds
 
 
-def whatif_specs(kinds: frozenset[str], q: int, lemmas: tuple[Lemma, ...], reach: int = 0) -> list[WhatIfSpec]:
+def whatif_specs(
+    kinds: frozenset[str], q: int, lemmas: tuple[Lemma, ...], reach: int | None = None
+) -> list[WhatIfSpec]:
     """Every obligation of the family with ``kinds``: as :func:`fatline_verify.prove.smt.legs.leg_specs`
     over :func:`classes`, keeping only pairs with a what-if class unless ``corner`` (whose edge tests
     differ from the shipped ones) is among the kinds. ``reach``: the longest ``left-alone`` leg
-    (lattice units; ``0``: one radius)."""
+    (lattice units; ``None``: one radius)."""
     legs = classes(kinds)
     shipped = {HORIZONTAL, TOP, BOTTOM}
     specs: list[WhatIfSpec] = []
