@@ -136,7 +136,7 @@ def left_alone_reach(model: Model, kinds: frozenset[Kind]) -> int:
     it is the lattice's own answer: one radius at ``q = 1``, half a radius at ``q = 2`` (the collision
     ``fatline prove repaired --with left,corner --q 2`` found: ``leg-left.and.top-corner``)."""
     rho = model.radius
-    key = (rho, model.view2, model.options.timing, model.options.contact, kinds & (EXCLUSIVE | {Kind.CORNER}))
+    key = (rho, model.view2, model.options.timing, model.options.contact, kinds)
     got = _REACH.get(key)
     if got is not None:
         return got
