@@ -18,6 +18,7 @@ FAMILIES = {
     "+ left": PROVED | {Kind.LEFT},
     "+ corner": PROVED | {Kind.CORNER},
     "+ left, corner": PROVED | {Kind.LEFT, Kind.CORNER},
+    "+ left-alone, corner": PROVED | {Kind.LEFT_ALONE, Kind.CORNER},
 }
 
 

@@ -17,7 +17,11 @@ from fatline_verify.repair.reach import PROVED, Kind, starts
 from fatline_verify.synth.encode import SOLVERS, Encoder, Stats, search, synthesise
 
 LEFT_CORNER = PROVED | {Kind.LEFT, Kind.CORNER}
-FAMILIES = {"right, vertical": PROVED, "+ left, corner": LEFT_CORNER}
+FAMILIES = {
+    "right, vertical": PROVED,
+    "+ left, corner": LEFT_CORNER,
+    "+ left-alone, corner": PROVED | {Kind.LEFT_ALONE, Kind.CORNER},
+}
 C, S = Scheduler.CENTRALIZED, Scheduler.SSYNC
 
 

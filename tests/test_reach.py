@@ -226,7 +226,7 @@ def test_models_without_proved_legs_or_another_goal_are_refused(tmp_path, capsys
         (["reach", "paper"], "expected a model with repair_lock=left-first"),
         (["reach", "repaired", "--window", "3x3", "--robots", "3"], "no initial configuration of 3 robots fits"),
         (["reach", "repaired", "--window", "99999x99999", "--robots", "2"], "does not pack into 63 bits"),
-        (["reach", "repaired", "--with", "up"], "with='up': expected what-if leg kinds from left, corner"),
+        (["reach", "repaired", "--with", "up"], "with='up': expected what-if leg kinds from left, left-alone, corner"),
         (["reach", "repaired", "--q", "0"], "q='0'"),
         (["reach", "repaired", "--robots", "0"], "robots='0'"),
         (["reach", "repaired", "--window", "9"], "window='9'"),

@@ -32,10 +32,10 @@ def _pt(ar: Arith, p: tuple[int, int]) -> Pt:
     return (z3.IntVal(int(p[0]), ar.ctx), z3.IntVal(int(p[1]), ar.ctx))
 
 
-def _class(end: tuple[int, int], up: bool) -> str:
+def _class(end: tuple[int, int], up: bool, kinds: frozenset[str] = frozenset()) -> str:
     dx, dy = end
     if dx < 0:
-        return w.LEFTWARD
+        return w.ALONE if w.LEFT_ALONE in kinds else w.LEFTWARD
     if dy == 0:
         return w.HORIZONTAL
     if dx == 0:
@@ -47,7 +47,12 @@ SEEN: dict[str, int] = {}
 VERTICAL_BRIDGES: list[int] = []
 
 
-KINDS = [frozenset({"left"}), frozenset({"left", "corner"})]
+KINDS = [
+    frozenset({"left"}),
+    frozenset({"left", "corner"}),
+    frozenset({"left-alone"}),
+    frozenset({"left-alone", "corner"}),
+]
 
 
 @pytest.mark.parametrize("kinds", KINDS)
@@ -76,7 +81,7 @@ def _check_family_legs(kinds: frozenset[str], case) -> None:
     for i in range(len(state)):
         snap = snapshot(state, i, family.model)
         for end, up in family.legs(state, i):
-            cls = _class(end, up)
+            cls = _class(end, up, kinds)
             SEEN[cls] = SEEN.get(cls, 0) + 1
             assert max(abs(end[0]), abs(end[1])) <= q and min(abs(end[0]), abs(end[1])) >= 0
             m = w.Mover(_pt(ar, (0, 0)), _pt(ar, end), cls)
@@ -104,7 +109,7 @@ def test_corner_legs_of_known_swarms_meet_each_asserted_condition(state):
 def test_the_property_test_saw_the_what_if_classes():
     if not SEEN:
         pytest.skip("run with the property test")
-    assert SEEN.get(w.LEFTWARD, 0) > 0, SEEN
+    assert SEEN.get(w.LEFTWARD, 0) > 0 and SEEN.get(w.ALONE, 0) > 0, SEEN
 
 
 def _spec(key: str, kinds: frozenset[str], q: int) -> w.WhatIfSpec:

@@ -25,7 +25,7 @@ def add_family_arguments(p: argparse.ArgumentParser) -> None:
         "--with",
         dest="with_",
         metavar="KINDS",
-        help="also what-if legs no proof covers: left, corner (comma-separated)",
+        help="also what-if legs no shipped proof covers: left or left-alone (left guarded), corner (comma-separated)",
     )
     p.add_argument(
         "--max-memory",
@@ -36,7 +36,7 @@ def add_family_arguments(p: argparse.ArgumentParser) -> None:
 
 def leg_kinds(text: str | None) -> frozenset[Any]:
     """The legs of ``--with``: the proved ones (right, vertical) and the what-if kinds named."""
-    from ..repair.reach import PROVED, WHAT_IF, Kind
+    from ..repair.reach import PROVED, WHAT_IF, Kind, check_kinds
 
     if text is None:
         return PROVED
@@ -45,6 +45,7 @@ def leg_kinds(text: str | None) -> frozenset[Any]:
     bad = [t for t in names if t not in allowed]
     if bad or not names:
         raise InvalidInput(f"with={text!r}: expected what-if leg kinds from {', '.join(allowed)}, comma-separated")
+    check_kinds(names)
     return PROVED | frozenset(Kind(t) for t in names)
 
 

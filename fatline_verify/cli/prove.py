@@ -208,7 +208,7 @@ def register(sub: Any) -> None:
         "--with",
         dest="with_",
         metavar="KINDS",
-        help="what-if: instead, the obligations of the legs fatline reach --with adds (left, corner; "
+        help="what-if: instead, the obligations of the legs fatline reach --with adds (left or left-alone, corner; "
         "comma-separated), decided on the lattice and replayed by reach's family; rows in "
         "OUT/MODEL/whatif-KINDS-qQ.json",
     )

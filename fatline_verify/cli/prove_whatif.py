@@ -1,4 +1,4 @@
-"""``fatline prove MODEL --with left,corner [--q Q]``: the what-if legs' obligations
+"""``fatline prove MODEL --with left|left-alone,corner [--q Q]``: the what-if legs' obligations
 (:mod:`fatline_verify.prove.whatif`), rows of their own; the shipped obligations are not touched."""
 
 from __future__ import annotations
@@ -16,13 +16,16 @@ ALL = "all"
 
 
 def parse_with(text: str) -> frozenset[str]:
-    """``left``, ``corner`` or ``left,corner`` (``fatline reach --with``'s names); bad ones are one line."""
+    """``left`` or ``left-alone``, ``corner``, comma-separated (``fatline reach --with``'s names); bad ones
+    are one line."""
     from ..prove.smt.whatif import KINDS
+    from ..repair.reach import check_kinds
 
     names = [t.strip() for t in text.split(",") if t.strip()]
     bad = [t for t in names if t not in KINDS]
     if not names or bad:
         raise InvalidInput(f"with={text!r}: expected what-if leg kinds, comma-separated, of {', '.join(KINDS)}")
+    check_kinds(names)
     return frozenset(names)
 
 
@@ -31,9 +34,8 @@ def cmd_prove_whatif(args: argparse.Namespace) -> int:
     rewritten after each (an interrupted run keeps what it finished)."""
     from ..prove.smt.legs import missing_repairs
     from ..prove.smt.solving import solver_version
-    from ..prove.smt.whatif import whatif_specs
     from ..prove.tasks import check_encoded
-    from ..prove.whatif import prove_whatif
+    from ..prove.whatif import obligations, prove_whatif
 
     kinds = parse_with(args.with_)
     model = model_arg(args.model)
@@ -50,7 +52,7 @@ def cmd_prove_whatif(args: argparse.Namespace) -> int:
     if args.lemma not in (ALL, Lemma.NO_COLLISION, Lemma.CONNECTIVITY):
         raise InvalidInput(f"lemma={args.lemma}: --with decides only no-collision and connectivity (or all)")
     lemmas = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY) if args.lemma == ALL else (Lemma(args.lemma),)
-    specs = whatif_specs(kinds, q, lemmas)
+    specs = obligations(model, kinds, lemmas)
     tag = f"whatif-{'-'.join(sorted(kinds))}-q{q}"
     root = claim_dir(args.out, name="out")
     out = claim_dir(child(root, model.name), name="out")

@@ -27,12 +27,13 @@ from ..lemmas.properties import Lemma, Verdict
 from ..model.config import Model
 from ..model.numbers import Point
 from ..model.swarm import initial_problems, is_connected
-from ..repair.reach import Family, Kind
+from ..repair.reach import PROVED as PROVED_KINDS
+from ..repair.reach import Family, Kind, left_alone_reach
 from ..rules.paper.algorithm import ORIGIN, Decision, Rule
 from ..rules.repaired.options import RepairProgress
 from ..schedulers.round import closest_dist2, collides, disconnection, lost_edges, play_round, snapshot
 from .search import Budget, rounds, rounds_text
-from .smt.whatif import BRIDGES, KEPT, REST, VERTICAL_BRIDGE, WhatIfSpec, argument, arith, build
+from .smt.whatif import BRIDGES, KEPT, REST, VERTICAL_BRIDGE, WhatIfSpec, argument, arith, build, whatif_specs
 
 VACUITY_SHARE = 0.05
 PROVED_ON = "unsat on the lattice q = {q}: holds for swarms of every size on it (the header's argument)"
@@ -78,6 +79,7 @@ class WhatIfResult:
             "smt2": self.smt2,
             "state": [list(p) for p in self.state],
             "moves": [[i, list(end)] for i, end in self.moves],
+            **({"left_alone_units": s.left_units} if "left-alone" in s.kinds else {}),
         }
 
 
@@ -139,7 +141,16 @@ def prove_whatif(model: Model, spec: WhatIfSpec, *, timeout: float, out: Path | 
 
 def family_kinds(spec: WhatIfSpec) -> frozenset[Kind]:
     """The kinds of ``reach``'s family the obligation is about: the proved ones and its what-ifs."""
-    return frozenset({Kind.RIGHT, Kind.VERTICAL, *(Kind(k) for k in spec.kinds)})
+    return PROVED_KINDS | {Kind(k) for k in spec.kinds}
+
+
+def obligations(model: Model, kinds: frozenset[str], lemmas: tuple[Lemma, ...]) -> list[WhatIfSpec]:
+    """The what-if obligations of ``kinds`` on ``model``'s lattice, the ``left-alone`` legs as long as
+    ``reach``'s family makes them (:func:`fatline_verify.repair.reach.left_alone_reach`): the one way the
+    command and the tests ask for them, so the prover and the family agree on the legs."""
+    family = PROVED_KINDS | {Kind(k) for k in kinds}
+    reach = left_alone_reach(model, family) if Kind.LEFT_ALONE in family else None
+    return whatif_specs(kinds, model.parameters.q, lemmas, reach)
 
 
 def replay_whatif(
@@ -249,4 +260,4 @@ def _lattice(model: Model, p: tuple[Fraction, Fraction]) -> Point:
     return (int(x), int(y))
 
 
-__all__ = ["WhatIfResult", "prove_whatif", "replay_whatif"]
+__all__ = ["WhatIfResult", "family_kinds", "obligations", "prove_whatif", "replay_whatif"]

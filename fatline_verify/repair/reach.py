@@ -22,9 +22,11 @@ vertical is reachable in that graph is one that **no rule set of the family** br
 an exact, rule-free statement, found by exhaustive search. (The converse does not hold: a line
 that can be reached still needs a rule set that finds the way from what each robot sees.)
 
-*What-if* kinds (:class:`Kind`) add legs the safety proof does **not** cover, to ask which kind of
+*What-if* kinds (:class:`Kind`) add legs the shipped safety proof does **not** cover, to ask which kind of
 leg a live repair would need: ``left`` (one radius or less left, by a robot that sees one right of
-it, so never off the RMA) and ``corner`` (right and
+it, so never off the RMA), ``left-alone`` (``left`` guarded: only by a robot that sees no other robot
+on its own vertical, and no longer than :func:`left_alone_reach` allows; ``fatline prove repaired
+--with left-alone`` decides its obligations) and ``corner`` (right and
 vertically at once, as ``repair_progress = corner``: its edge tests are used).
 
 The search runs in two phases. Rounds with one mover are a subgraph of the round graph and far
@@ -78,12 +80,106 @@ class Kind(StrEnum):
     """Proved: the ``top`` and ``bottom`` classes."""
     LEFT = "left"
     """What-if: one radius or less left, by a robot that sees one right of it (no leg obligation covers it)."""
+    LEFT_ALONE = "left-alone"
+    """What-if, guarded: a ``left`` leg by a robot that sees no other robot on its own vertical, at most
+    :func:`left_alone_reach` units long (visibility is symmetric: two robots of one vertical that see
+    each other never move in one round with one of them stepping left; a robot the mover does not see
+    cannot reach its path by any leg of the family)."""
     CORNER = "corner"
     """What-if: right and vertically at once, as ``repair_progress = corner`` (up to sqrt(2) radii long)."""
 
 
 PROVED = frozenset({Kind.RIGHT, Kind.VERTICAL})
-WHAT_IF = (Kind.LEFT, Kind.CORNER)
+WHAT_IF = (Kind.LEFT, Kind.LEFT_ALONE, Kind.CORNER)
+EXCLUSIVE = frozenset({Kind.LEFT, Kind.LEFT_ALONE})
+"""At most one of these in a family: ``left-alone`` is ``left`` with a guard (:func:`check_kinds`)."""
+
+
+def check_kinds(kinds: Iterable[str]) -> None:
+    """Refuse (one line) a family with both ``left`` and ``left-alone``: the guarded kind is a part of the other."""
+    from ..errors import InvalidInput
+
+    both = sorted(str(k) for k in kinds if k in EXCLUSIVE)
+    if len(both) > 1:
+        raise InvalidInput(
+            f"with={','.join(both)}: {Kind.LEFT_ALONE} is {Kind.LEFT} with a guard; expected one of them"
+        )
+
+
+def _shapes(rho: int, kinds: frozenset[Kind]) -> list[Point]:
+    """Every leg end (relative, lattice units) any robot of a family with ``kinds`` may take, whatever it sees."""
+    out: list[Point] = []
+    if Kind.RIGHT in kinds:
+        out += [(k, 0) for k in range(1, rho + 1)]
+    if Kind.VERTICAL in kinds:
+        out += [(0, k) for k in range(-rho, rho + 1) if k]
+    if kinds & EXCLUSIVE:
+        out += [(-k, 0) for k in range(1, rho + 1)]
+    if Kind.CORNER in kinds:
+        out += [(k, j) for k in range(1, rho + 1) for j in range(-rho, rho + 1) if j]
+    return out
+
+
+_REACH: dict[tuple[object, ...], int] = {}
+
+
+def left_alone_reach(model: Model, kinds: frozenset[Kind]) -> int:
+    """The longest ``left-alone`` leg, in lattice units (at most one radius): the greatest ``K`` such that no
+    robot the mover does not see (squared distance beyond ``rad_v``), taking any leg of ``kinds`` in the
+    same round (:func:`_shapes`, whatever it sees: a stronger test), comes within a collision of the
+    mover's path to ``(-k, 0)`` for any ``k <= K``; by the model's own ``closest_dist2`` and ``collides``
+    (exact integers). A robot it does not see may be beyond ``2 + k + |leg|`` radii of the mover only,
+    so the search covers the robots within 5 radii (a leg is at most sqrt(2) < 2 radii).
+
+    With the proved legs and left legs the answer is one radius (unit legs: ``d > rad_v >= 4`` radii
+    minus two legs of at most one radius each is more than two radii); with corner legs (sqrt(2) radii)
+    it is the lattice's own answer: one radius at ``q = 1``, half a radius at ``q = 2`` (the collision
+    ``fatline prove repaired --with left,corner --q 2`` found: ``leg-left.and.top-corner``)."""
+    rho = model.radius
+    key = (rho, model.view2, model.options.timing, model.options.contact, kinds)
+    got = _REACH.get(key)
+    if got is not None:
+        return got
+    legs = _shapes(rho, kinds)
+    far = 25 * rho * rho  # (2 + 1 + 2)^2 radii^2: beyond it no leg of at most 2 radii meets one of 1 radius
+    box = 5 * rho
+    around = [
+        (x, y)
+        for x in range(-box, box + 1)
+        for y in range(-box, box + 1)
+        if not model.sees(x * x + y * y) and x * x + y * y <= far
+    ]
+    best = 0
+    for k in range(1, rho + 1):
+        mine = (ORIGIN, (-k, 0))
+        if any(
+            collides(closest_dist2(mine, ((x, y), (x + a, y + b)), ORIGIN, (x, y), model), model)
+            for x, y in around
+            for a, b in legs
+        ):
+            break
+        best = k
+    _REACH[key] = best
+    return best
+
+
+def what_if_text(kinds: frozenset[Kind], model: Model) -> str:
+    """`` + what-if ...``: the what-if kinds of a family as ``reach`` and ``synth`` print them, with the
+    command that decides their safety obligations (not the shipped rows; nothing is claimed here)."""
+    extra = [k for k in Kind if k in kinds and k not in PROVED]
+    if not extra:
+        return ""
+    names = []
+    for k in extra:
+        longest = left_alone_reach(model, kinds) if k is Kind.LEFT_ALONE else model.radius
+        names.append(
+            k.value
+            + (f" (at most {longest} lattice unit{'s' if longest > 1 else ''})" if longest < model.radius else "")
+        )
+    return (
+        f" + what-if {', '.join(names)} (no shipped obligation covers them; their own: fatline prove "
+        f"{model.name} --with {','.join(k.value for k in extra)} --q {model.parameters.q})"
+    )
 
 
 def family_model(model: Model, kinds: frozenset[Kind]) -> Model:
@@ -114,6 +210,8 @@ def family_legs(snap: tuple[Point, ...], model: Model, kinds: frozenset[Kind] = 
             tries += [((0, k), True) for k in range(1, min(rho, room) + 1)]
     if Kind.LEFT in kinds and right > 0:  # a robot that may be on the RMA may not leave it (Lemma 3)
         tries += [((-k, 0), False) for k in range(1, rho + 1)]
+    if Kind.LEFT_ALONE in kinds and right > 0 and not any(c[0] == 0 for c in snap):  # alone on its vertical
+        tries += [((-k, 0), False) for k in range(1, left_alone_reach(model, kinds) + 1)]
     if Kind.CORNER in kinds:
         for k in range(1, min(rho, right) + 1):
             if below and not above:
@@ -468,10 +566,13 @@ __all__ = [
     "Kind",
     "ReachResult",
     "canonical",
+    "check_kinds",
     "confirm_stuck",
     "family_legs",
+    "left_alone_reach",
     "reach",
     "refuse",
     "replay_witness",
     "way_to_line",
+    "what_if_text",
 ]

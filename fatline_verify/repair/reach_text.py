@@ -8,7 +8,7 @@ from ..model.config import Model, model_to_mapping
 from ..model.numbers import format_number
 from ..outputs import Kind as OutputKind
 from ..text import plural
-from .reach import PROVED, Kind, ReachResult, State, alone
+from .reach import PROVED, Kind, ReachResult, State, alone, what_if_text
 
 
 def _radii(model: Model, state: State) -> str:
@@ -20,11 +20,10 @@ def _point_list(model: Model, state: State) -> list[list[str]]:
     return [[str(format_number(v)) for v in model.from_lattice(p)] for p in state]
 
 
-def _kinds_text(kinds: frozenset[Kind]) -> str:
+def _kinds_text(kinds: frozenset[Kind], model: Model) -> str:
     proved = ", ".join(k.value for k in Kind if k in PROVED)
-    extra = [k.value for k in Kind if k in kinds and k not in PROVED]
     text = f"{proved} (the classes fatline prove proves safe: fatline_verify/prove/smt/legs.py)"
-    return text + (f" + what-if {', '.join(extra)} (no proof covers them)" if extra else "")
+    return text + what_if_text(kinds, model)
 
 
 def _simulate(model: Model, ref: str, state: State) -> str:
@@ -50,9 +49,9 @@ def reach_lines(
     )
     lines = [
         f"model {model.describe()}",
-        f"legs: {_kinds_text(kinds)}, each {'one lattice unit' if q == 1 else f'1 to {q} lattice units'} long per "
-        "axis (one radius at most), right no farther than the greatest x the mover sees; in a round, any set of "
-        "robots the lock lets move, each any of its legs",
+        f"legs: {_kinds_text(kinds, model)}, each {'one lattice unit' if q == 1 else f'1 to {q} lattice units'} "
+        "long per axis (one radius at most), right no farther than the greatest x the mover sees; in a round, any "
+        "set of robots the lock lets move, each any of its legs",
         f"initial configurations: every one in a {w}x{h} window of lattice points ({radii} radii), up to translation",
         "",
         f"{'robots':>6}  {'initial':>9}  {'line, 1 mover':>13}  {'line, any':>9}  {'stuck':>7}  "

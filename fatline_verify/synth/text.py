@@ -8,7 +8,7 @@ from ..integrity import seal
 from ..model.config import Model, model_to_mapping
 from ..model.numbers import format_number
 from ..outputs import Kind as OutputKind
-from ..repair.reach import PROVED, Kind, State
+from ..repair.reach import PROVED, Kind, State, what_if_text
 from .certificate import Certificate
 from .encode import SynthResult
 
@@ -24,10 +24,9 @@ def counts_text(r: SynthResult) -> str:
     return str(r.n) if len(c) == 1 else f"{c.start}..{r.n}"
 
 
-def kinds_text(kinds: frozenset[Kind]) -> str:
+def kinds_text(kinds: frozenset[Kind], model: Model) -> str:
     proved = [k.value for k in Kind if k in PROVED]
-    extra = [k.value for k in Kind if k in kinds and k not in PROVED]
-    return ", ".join(proved) + (f" + what-if {', '.join(extra)} (no leg obligation covers them)" if extra else "")
+    return ", ".join(proved) + what_if_text(kinds, model)
 
 
 def synth_lines(
@@ -40,8 +39,8 @@ def synth_lines(
     w, h = first.window
     lines = [
         f"model {model.describe()}",
-        f"tables: a robot's view (what it sees within rad_v, relative to it) -> one leg of {kinds_text(first.kinds)} "
-        "(fatline reach's family, under its lock), or stay",
+        "tables: a robot's view (what it sees within rad_v, relative to it) -> one leg of "
+        f"{kinds_text(first.kinds, model)} (fatline reach's family, under its lock), or stay",
         f"scheduler: {first.scheduler.value}; initial configurations: every one in a {w}x{h} window of lattice "
         f"points; live: every execution the scheduler allows (no fairness assumed) reaches one vertical, every "
         f"round safe; solver {first.solver} (python-sat)",
@@ -75,10 +74,12 @@ def synth_lines(
                 f"{rp.rounds_played:,} rounds played, at most {rp.rounds} rounds to a line)"
             )
             continue
-        lines.append(
-            f"{counts_text(r)} robots: UNSAT -- no table of these legs is safe and live from these "
-            f"{len(r.core)} initial configuration{'s' if len(r.core) != 1 else ''} together (each is needed):"
+        which = (
+            "this initial configuration"
+            if len(r.core) == 1
+            else f"these {len(r.core)} initial configurations together (each is needed)"
         )
+        lines.append(f"{counts_text(r)} robots: UNSAT -- no table of these legs is safe and live from {which}:")
         for row in cert.core[:shown]:
             planner = (
                 f"a line in {row.planner} rounds by the family (replayed)"

@@ -5,6 +5,11 @@ two kinds of leg that no shipped obligation covers (:data:`fatline_verify.repair
 
 - ``left``: ``(-k, 0)``, ``1 <= k <= q`` lattice units (one radius or less), by a robot that sees no
   robot strictly left of it (the lock) and one right of it;
+- ``left-alone``: ``left`` guarded: the mover sees no other robot on its own vertical (visibility is
+  symmetric, so no robot that sees it on its vertical moves with it when one of them steps left:
+  every pair of movers that see each other, and every bridge, with a ``left-alone`` leg never occurs),
+  and the leg is at most ``spec.reach`` units (:func:`fatline_verify.repair.reach.left_alone_reach`: no
+  robot the mover does not see reaches its path by a leg of the family);
 - ``top-corner`` / ``bottom-corner`` (``corner``): ``(k, -j)`` by a robot seeing robots below it on its
   vertical and none above, ``(k, j)`` by one seeing robots above and none below, ending at least 3
   radii below each; ``1 <= k, j <= q`` (up to sqrt(2) radii long). ``repairs.allowed`` then also
@@ -34,6 +39,7 @@ mover's own vertical, which may move (``bridged-vertical``, one obligation per l
 from __future__ import annotations
 
 from dataclasses import dataclass
+from fractions import Fraction
 
 import z3
 
@@ -44,12 +50,16 @@ from .cases import Arith, Pt, apart, sees, view_reach
 from .claims import Built, capsules_close, segment_close
 
 LEFT = "left"
+LEFT_ALONE = "left-alone"
 CORNER = "corner"
-KINDS = (LEFT, CORNER)
+KINDS = (LEFT, LEFT_ALONE, CORNER)
 """The what-if kinds, as ``fatline reach --with`` names them."""
 
 HORIZONTAL, TOP, BOTTOM = "horizontal", "top", "bottom"
 LEFTWARD, TOP_CORNER, BOTTOM_CORNER = "left", "top-corner", "bottom-corner"
+ALONE = "left-alone"
+"""The guarded left leg's class (same name as its kind)."""
+LEFTS = (LEFTWARD, ALONE)
 VERTICAL_PART = (TOP, BOTTOM, TOP_CORNER, BOTTOM_CORNER)
 CORNERS = (TOP_CORNER, BOTTOM_CORNER)
 REST = "rest"
@@ -70,6 +80,8 @@ def classes(kinds: frozenset[str]) -> tuple[str, ...]:
     out = [HORIZONTAL, TOP, BOTTOM]
     if LEFT in kinds:
         out.append(LEFTWARD)
+    if LEFT_ALONE in kinds:
+        out.append(ALONE)
     if CORNER in kinds:
         out += list(CORNERS)
     return tuple(out)
@@ -88,6 +100,14 @@ class WhatIfSpec:
     q: int
     via: str = REST
     """``bridged-vertical``: the bridge b's leg (or :data:`REST`)."""
+    reach: int | None = None
+    """The longest ``left-alone`` leg in lattice units (:func:`fatline_verify.repair.reach.left_alone_reach`);
+    ``None``: one radius (``q``)."""
+
+    @property
+    def left_units(self) -> int:
+        """The longest ``left-alone`` leg, lattice units."""
+        return self.q if self.reach is None else self.reach
 
     @property
     def key(self) -> str:
@@ -104,10 +124,13 @@ class WhatIfSpec:
         return CORNER in self.kinds
 
 
-def whatif_specs(kinds: frozenset[str], q: int, lemmas: tuple[Lemma, ...]) -> list[WhatIfSpec]:
+def whatif_specs(
+    kinds: frozenset[str], q: int, lemmas: tuple[Lemma, ...], reach: int | None = None
+) -> list[WhatIfSpec]:
     """Every obligation of the family with ``kinds``: as :func:`fatline_verify.prove.smt.legs.leg_specs`
     over :func:`classes`, keeping only pairs with a what-if class unless ``corner`` (whose edge tests
-    differ from the shipped ones) is among the kinds."""
+    differ from the shipped ones) is among the kinds. ``reach``: the longest ``left-alone`` leg
+    (lattice units; ``None``: one radius)."""
     legs = classes(kinds)
     shipped = {HORIZONTAL, TOP, BOTTOM}
     specs: list[WhatIfSpec] = []
@@ -120,12 +143,13 @@ def whatif_specs(kinds: frozenset[str], q: int, lemmas: tuple[Lemma, ...]) -> li
                 for other in others:
                     if form == VERTICAL_BRIDGE:
                         specs += [
-                            WhatIfSpec(lemma, form, mine, other, frozenset(kinds), q, via) for via in (REST, *legs)
+                            WhatIfSpec(lemma, form, mine, other, frozenset(kinds), q, via, reach)
+                            for via in (REST, *legs)
                         ]
                         continue
                     if CORNER not in kinds and mine in shipped and other in (shipped | {REST}):
                         continue  # a shipped obligation, unchanged (fatline prove repaired)
-                    specs.append(WhatIfSpec(lemma, form, mine, other, frozenset(kinds), q))
+                    specs.append(WhatIfSpec(lemma, form, mine, other, frozenset(kinds), q, REST, reach))
     return specs
 
 
@@ -138,15 +162,18 @@ class Mover:
     leg: str
 
 
-def mover(ar: Arith, name: str, leg: str, at: Pt) -> tuple[Mover, list[z3.BoolRef]]:
-    """A leg of class ``leg`` from ``at``: whole lattice units, at most one radius along each axis it uses."""
+def mover(ar: Arith, name: str, leg: str, at: Pt, left: Fraction = Fraction(1)) -> tuple[Mover, list[z3.BoolRef]]:
+    """A leg of class ``leg`` from ``at``: whole lattice units, at most one radius along each axis it uses
+    (a ``left-alone`` leg at most ``left`` radii)."""
     k = ar.var(f"{name}.k")
     zero, one = ar.num(0), ar.num(1)
     shape = [k > zero, k <= one]
     if leg == HORIZONTAL:
         end = (at[0] + k, at[1])
-    elif leg == LEFTWARD:
+    elif leg in LEFTS:
         end = (at[0] - k, at[1])
+        if leg == ALONE:
+            shape = [k > zero, k <= ar.num(left)]
     elif leg == TOP:
         end = (at[0], at[1] + k)
         shape = [k != zero, k >= -one, k <= one]
@@ -168,7 +195,8 @@ def conditions(ar: Arith, model: Model, m: Mover, c: Pt) -> z3.BoolRef:
     strictly left of m (the lock), clear of m's swept disc (and, for a corner leg, of c's move right
     when c is on m's vertical), and the class's condition on m's vertical."""
     on_vertical = c[0] == m.at[0]
-    facts = [c[0] >= m.at[0], z3.Not(segment_close(ar, model, c, m.at, m.end))]
+    # the lock: not strictly left of m; the left-alone guard: not on m's vertical either
+    facts = [c[0] > m.at[0] if m.leg == ALONE else c[0] >= m.at[0], z3.Not(segment_close(ar, model, c, m.at, m.end))]
     if m.leg in CORNERS:
         facts.append(z3.Implies(on_vertical, z3.Not(capsules_close(ar, model, (m.at, m.end), (c, _right(ar, c))))))
     if m.leg in (TOP, TOP_CORNER):
@@ -287,18 +315,19 @@ def build(
     Every named robot lies within a box of the larger of the view and 5 radii around r: a violation
     needs the robots within view (an edge) or within 2 + 2 sqrt(2) < 5 (a collision), so the box
     excludes none."""
-    r, asserts = mover(ar, "r", spec.mine, ar.origin())
+    left = Fraction(spec.left_units, spec.q)
+    r, asserts = mover(ar, "r", spec.mine, ar.origin(), left)
     o_at = ar.point("o")
     bodies: dict[str, Pt] = {"r": r.at, "o": o_at}
     movers = {"r": r}
     if spec.other != REST:
-        o, more = mover(ar, "o", spec.other, o_at)
+        o, more = mover(ar, "o", spec.other, o_at, left)
         asserts += more
         movers["o"] = o
     if spec.form in BRIDGES:
         bodies["b"] = ar.point("b")
         if spec.form == VERTICAL_BRIDGE and spec.via != REST:
-            b, more = mover(ar, "b", spec.via, bodies["b"])
+            b, more = mover(ar, "b", spec.via, bodies["b"], left)
             asserts += more
             movers["b"] = b
     for k in range(1, extra + 1 if closed else 1):
@@ -345,7 +374,7 @@ def witness(ar: Arith, model: Model, m: Mover, w: Pt) -> z3.BoolRef:
         return z3.And(seen, on, w[1] < m.at[1])
     if m.leg in (BOTTOM, BOTTOM_CORNER):
         return z3.And(seen, on, w[1] > m.at[1])
-    if m.leg == LEFTWARD:
+    if m.leg in LEFTS:
         return z3.And(seen, w[0] > m.at[0])
     if m.leg == HORIZONTAL:
         return z3.And(seen, w[0] - m.at[0] >= m.end[0] - m.at[0])
@@ -381,7 +410,7 @@ def closed_swarm(ar: Arith, model: Model, spec: WhatIfSpec, movers: list[Mover],
         dx = m.end[0] - m.at[0]
         if m.leg in (HORIZONTAL, *CORNERS):
             out.append(z3.Or(*[z3.And(sees(ar, model, m.at, p), p[0] - m.at[0] >= dx) for p in seen]))
-        if m.leg == LEFTWARD:
+        if m.leg in LEFTS:
             out.append(z3.Or(*[z3.And(sees(ar, model, m.at, p), p[0] > m.at[0]) for p in seen]))
         if m.leg == TOP_CORNER:
             out.append(z3.Or(*[z3.And(sees(ar, model, m.at, p), p[0] == m.at[0], p[1] < m.at[1]) for p in seen]))
@@ -414,13 +443,14 @@ def argument(model: Model, spec: WhatIfSpec, built: Built) -> str:
         f"Claim: {spec.claim}.",
         "Legs (fatline_verify/repair/reach.py, family_legs), whole lattice units, at most one radius per axis: "
         "horizontal (k, 0); top (0, +-k) seeing no robot above on its vertical; bottom (0, k) seeing none below, "
-        "ending >= 3 radii below each above; left (-k, 0); top-corner (k, -j) seeing none above; bottom-corner "
-        "(k, j) seeing none below, ending >= 3 radii below each above.",
+        "ending >= 3 radii below each above; left (-k, 0); left-alone (-k, 0), k <= "
+        f"{spec.left_units} units, seeing no other robot on its own vertical; top-corner (k, -j) seeing none "
+        "above; bottom-corner (k, j) seeing none below, ending >= 3 radii below each above.",
         "Each mover's conditions for every named robot it sees (repairs.allowed): not strictly left of it (the "
-        "lock), clear of its swept disc (and of the robot's move right if on its vertical, for a corner leg), its "
-        "class's condition on its vertical; kept: its end sees the robot (and it one radius right if the mover's "
-        "leg is vertical in part and the robot on its vertical); bridged: b right of r, seen by r, sees r's end and "
-        "o wherever repairs._anywhere puts it"
+        "lock; for a left-alone leg not on its vertical either: the guard), clear of its swept disc (and of the "
+        "robot's move right if on its vertical, for a corner leg), its class's condition on its vertical; kept: "
+        "its end sees the robot (and it one radius right if the mover's leg is vertical in part and the robot on "
+        "its vertical); bridged: b right of r, seen by r, sees r's end and o wherever repairs._anywhere puts it"
         + (" (under corner: at rest and one radius right)" if spec.corner_mode else "")
         + "; b sees r strictly left of it, so the lock holds it at rest.",
         f"Named robots: {', '.join(n for n in built.bodies if not n.endswith(chr(39)))} (r at the origin), "
