@@ -269,7 +269,8 @@ def test_every_corpus_counterexample_is_gone_on_its_own_rounds():
         else:
             assert still == recorded == "connectivity-edge", path.name
             tally["connectivity-edge"] += 1
-    assert tally == {"gone": 360, "connectivity-edge": 23, "not playable": 2}, tally
+    # every trace gone but the 23 edge refinements and the 2 ASYNC traces (the corpus grows with fatline report)
+    assert tally == {"gone": len(CORPUS) - 25, "connectivity-edge": 23, "not playable": 2}, tally
 
 
 @pytest.mark.slow
