@@ -64,7 +64,8 @@ def test_every_move_of_the_repaired_rules_is_a_leg_of_the_family(spec, q):
 def test_the_pocket_is_stuck_and_left_legs_free_it():
     model = load_model("repaired").with_q(2)
     pocket = canonical(model.to_lattice(p) for p in POCKET.robots)
-    assert confirm_stuck(pocket, Family(model)) == 1  # no robot has a leg: the certificate of fatline_verify/repair/pocket.py
+    # no robot has a leg: the certificate of fatline_verify/repair/pocket.py
+    assert confirm_stuck(pocket, Family(model)) == 1
     with pytest.raises(AssertionError, match="reaches the line"):
         confirm_stuck(pocket, Family(model, PROVED | {Kind.LEFT}))
 

@@ -142,7 +142,9 @@ def test_kept_answers_give_the_same_check_and_are_read_again(tmp_path, monkeypat
     (kept,) = (tmp_path / "answers").glob("*.npz")
     asked = []
     original = compiled.CompiledEngine._learn_decisions
-    monkeypatch.setattr(compiled.CompiledEngine, "_learn_decisions", lambda self, k, n: (asked.append(len(k)), original(self, k, n)))
+    monkeypatch.setattr(
+        compiled.CompiledEngine, "_learn_decisions", lambda self, k, n: (asked.append(len(k)), original(self, k, n))
+    )
     second = check(model, (4, 4), (6, 6))
     assert not asked  # every decision came from the kept file
     for got in (first, second):

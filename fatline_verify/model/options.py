@@ -474,7 +474,7 @@ SLUG_NAME = re.compile(r"[a-z][a-z0-9-]{0,39}")
 """A plug-in's name: lower-case letters, digits and '-'."""
 
 
-def parse_reading(name: str, value: object) -> StrEnum:
+def parse_reading(name: str, value: object) -> StrEnum | SchedulerName:
     """The reading ``value`` of option ``name``, or a one-line :class:`InvalidModel`."""
     spec = CATALOGUE.get(name)
     if spec is None:

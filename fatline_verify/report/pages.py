@@ -12,9 +12,9 @@ from __future__ import annotations
 import html
 import re
 
+from ..prove.coverage import NOT_ENCODED
 from ..schedulers.systems import system_for
 from ..text import PROVE_ROBOTS_LEGEND, plural, prove_row
-from ..prove.coverage import NOT_ENCODED
 from .against_pages import against_html, against_markdown
 from .data import ModelReport
 from .matrix import cross_model_html, cross_model_markdown, featured

@@ -12,7 +12,6 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import ClassVar
 
-
 from ..lemmas.properties import Lemma
 from ..model.config import Model
 from ..model.geometry import Path, path_point_dist2, paths_any_speed_dist2, paths_lockstep_dist2

@@ -18,7 +18,7 @@ import numpy as np
 
 from ..errors import InvalidInput, InvalidTrace
 from ..model.config import Model
-from ..model.lattice import KeyCodec, canonical, key_codec
+from ..model.lattice import canonical, key_codec
 from ..model.options import Scheduler
 from ..model.swarm import State, is_goal
 from .activation import RoundScheduler, round_scheduler

@@ -232,9 +232,24 @@ def test_adding_a_lemma_changes_no_other_lemma_s_evidence(tmp_path: Path) -> Non
         out = tmp_path / f"{name}.json"
         env = {**os.environ, "PYTHONPATH": env_path}
         got = subprocess.run(
-            [sys.executable, "-m", "fatline_verify.cli", "check", "paper", "--robots", "2..3", "--json", str(out),
-             "--traces", str(tmp_path / name), "-q"],
-            capture_output=True, text=True, env=env, cwd=ROOT,
+            [
+                sys.executable,
+                "-m",
+                "fatline_verify.cli",
+                "check",
+                "paper",
+                "--robots",
+                "2..3",
+                "--json",
+                str(out),
+                "--traces",
+                str(tmp_path / name),
+                "-q",
+            ],
+            capture_output=True,
+            text=True,
+            env=env,
+            cwd=ROOT,
         )
         assert got.returncode == 1, got.stderr
         data = json.loads(out.read_text())
@@ -255,7 +270,10 @@ def test_the_committed_corpus_replays_with_the_lemma_installed() -> None:
     env = {**os.environ, "PYTHONPATH": str(SITE)}
     got = subprocess.run(
         [sys.executable, "-m", "fatline_verify.cli", "replay", *map(str, sample)],
-        capture_output=True, text=True, env=env, cwd=ROOT,
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=ROOT,
     )
     assert got.returncode == 0, got.stdout[-2000:] + got.stderr
     assert got.stdout.count("reproduces") == len(sample)

@@ -2,7 +2,8 @@
 
 With ``repair_lock``, ``repair_step``, ``repair_clear`` and ``repair_edges`` on
 (:mod:`fatline_verify.rules.repaired.algorithm`), a robot m that moves makes one leg that ``repairs.allowed``
-passed, of one of three classes (:class:`~fatline_verify.rules.repaired.algorithm.Leg`, :func:`~fatline_verify.rules.repaired.algorithm.leg_of`):
+passed, of one of three classes (:class:`~fatline_verify.rules.repaired.algorithm.Leg`,
+:func:`~fatline_verify.rules.repaired.algorithm.leg_of`):
 
 - ``horizontal``: to ``(dx, 0)``, ``0 < dx <= 1`` (:data:`RIGHTWARD`);
 - ``top``: to ``(0, dy)``, ``0 < |dy| <= 1``, m seeing no robot above it on its vertical;
@@ -268,7 +269,8 @@ def argument(model: Model, spec: LegSpec, built: Built) -> str:
             "pairwise disjoint discs.",
             "Why unsat covers swarms of every size: the conditions asserted are universal over the robots a mover "
             "sees (so they hold for the named ones in any swarm), and every collision, and every edge with a mover "
-            "at one end, is an instance of one leg obligation (the module docstring of fatline_verify/prove/smt/legs.py); "
+            "at one end, is an instance of one leg obligation "
+            "(the module docstring of fatline_verify/prove/smt/legs.py); "
             "each edge before the round is then a path of at most two edges after it, and the swarm stays connected. "
             "tests/test_legs.py checks the leg classes and each condition on the repaired rules' own decisions.",
             "Assumptions: exact real arithmetic; unit discs; one shared snapshot per round.",

@@ -80,6 +80,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from fractions import Fraction
 
 from ...model.config import Model
 from ...model.geometry import dist2, path_point_dist2, segment_segment_dist2
@@ -122,7 +123,7 @@ def _stay(rule: str) -> Decision:
     return Decision(rule, ORIGIN, (ORIGIN,), ())  # type: ignore[arg-type]
 
 
-def _collide(d2: int, model: Model) -> bool:
+def _collide(d2: int | Fraction, model: Model) -> bool:
     """Whether squared centre distance ``d2`` is a collision under the model's ``contact``."""
     limit = model.contact2
     return d2 < limit or (model.options.contact is Contact.STRICT and d2 == limit)

@@ -1,6 +1,5 @@
 """The repaired rule set's registration: its options, decision function and prover encoding."""
 
-
 from collections.abc import Sequence
 from typing import Any
 
