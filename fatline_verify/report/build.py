@@ -197,8 +197,8 @@ def cached_check(model: Model, cache: Path, traces: Path, refresh: bool) -> dict
 
 
 REPORTED = PROVER_LEMMAS
-"""The prover's lemmas a report shows and computes: the safety lemmas (the liveness obligations,
-``fatline prove --lemma liveness``, are not in the report's columns)."""
+"""The prover's lemmas a report shows and computes: every lemma with obligations, the liveness ones
+(progress: enabledness per decision case; termination: the ranking measure) included."""
 
 
 def cached_prove(model: Model, proofs: Path, slots: int, timeout: float, refresh: bool) -> dict[str, Any]:
