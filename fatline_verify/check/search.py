@@ -477,7 +477,9 @@ def explore_keys(
     if count == 1:  # no copies: the shard's visited set is sorted keys, the frontier its last level
         pool.map("seed", [(np.sort(visited) if len(rec.keys) > 1 else visited, frontier, frontier_ids)])
     else:
-        owner_all, owner_front = owners(visited, count), owners(frontier, count)
+        owner_all = owners(visited, count)
+        # the initial level is the whole visited set: its owners once
+        owner_front = owner_all if len(frontier) == len(visited) else owners(frontier, count)
         pool.map(
             "seed",
             [
@@ -508,7 +510,7 @@ def explore_keys(
             lv_parts = pool.map("expand", [(batch, None, room) + ((spill,) if spill else ())] * count)
         if any(p.needed for p in lv_parts):  # a shard's real figures passed its share of the budget
             level_need = count * max(p.needed for p in lv_parts)
-            limit, needed = Limit.MAX_MEMORY, int((_held(pool, rec)[0] + level_need) * PEAK_FACTOR)
+            limit, needed = Limit.MAX_MEMORY, int((_held(pool, rec, frontier)[0] + level_need) * PEAK_FACTOR)
             break
         lv = _merge_levels(lv_parts, n)
         rec.add_expansion(lv)
@@ -552,10 +554,11 @@ def _tick(progress: ProgressTick, level: int, states: int, done: int, frontier: 
     progress(level, done, frontier, states)
 
 
-def _held(pool: ShardPool, rec: _Records) -> tuple[int, int]:
-    """The bytes the search holds in memory (its columns, its shards' visited sets and frontiers: each
-    buffer once, :func:`.guard.held_bytes`; shards in other processes as they report) and its states."""
-    arrays = [a for name in _RECORD_COLUMNS for a in getattr(rec, name)]
+def _held(pool: ShardPool, rec: _Records, frontier: np.ndarray) -> tuple[int, int]:
+    """The bytes the search holds in memory (its columns, the frontier, its shards' visited sets and
+    frontiers: each buffer once, :func:`.guard.held_bytes`; shards in other processes as they report)
+    and its states."""
+    arrays = [frontier] + [a for name in _RECORD_COLUMNS for a in getattr(rec, name)]
     remote = 0
     if isinstance(pool, LocalShards):
         arrays += [a for s in pool.shards for a in (s.visited, s.frontier, s.frontier_ids)]
@@ -575,7 +578,7 @@ def _guard(pool: ShardPool, rec: _Records, frontier: np.ndarray, frontier_ids: n
     sample of the frontier measures."""
     count = pool.count
     local = isinstance(pool, LocalShards)
-    held = partial(_held, pool, rec)
+    held = partial(_held, pool, rec, frontier)
 
     def price() -> int:
         rates = guard.presumed(rec.summary, [len(g) for g in rec.goal])
