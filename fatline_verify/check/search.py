@@ -478,15 +478,16 @@ def explore_keys(
         pool.map("seed", [(np.sort(visited) if len(rec.keys) > 1 else visited, frontier, frontier_ids)])
     else:
         owner_all = owners(visited, count)
-        # the initial level is the whole visited set: its owners once
-        owner_front = owner_all if len(frontier) == len(visited) else owners(frontier, count)
-        pool.map(
-            "seed",
-            [
-                (np.sort(visited[owner_all == o]), frontier[owner_front == o], frontier_ids[owner_front == o])
-                for o in range(count)
-            ],
-        )
+        initial_level = len(frontier) == len(visited)  # the initial level is the whole visited set, sorted
+        owner_front = owner_all if initial_level else owners(frontier, count)
+        seeds = []
+        for o in range(count):
+            mine = visited[owner_all == o]
+            front = None if initial_level else frontier[owner_front == o]  # None: the shard's visited set
+            seeds.append((mine if initial_level else np.sort(mine), front, frontier_ids[owner_front == o]))
+            del mine, front
+        pool.map("seed", seeds)
+        del seeds
         del owner_all, owner_front
     del visited
     total = sum(len(k) for k in rec.keys)

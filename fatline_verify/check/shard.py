@@ -152,9 +152,10 @@ class Shard:
         self.lemmas = registered()
         """Registered step lemmas: judged on every transition, by one numpy pass over its positions."""
 
-    def seed(self, visited: np.ndarray, frontier: np.ndarray, frontier_ids: np.ndarray) -> int:
-        """Start (or resume) with these owned keys: ``visited`` sorted, the frontier a sorted subset."""
-        self.visited, self.frontier, self.frontier_ids = visited, frontier, frontier_ids
+    def seed(self, visited: np.ndarray, frontier: np.ndarray | None, frontier_ids: np.ndarray) -> int:
+        """Start (or resume) with these owned keys: ``visited`` sorted, the frontier a sorted subset
+        (``None``: all of them, one array, not a copy sent beside it)."""
+        self.visited, self.frontier, self.frontier_ids = visited, visited if frontier is None else frontier, frontier_ids
         return len(self.visited)
 
     def _batches(
@@ -292,7 +293,9 @@ class Shard:
         self.frontier_ids = ids
 
     def visited_bytes(self) -> int:
-        return int(self.visited.nbytes + self.frontier.nbytes + self.frontier_ids.nbytes)
+        """Bytes of the visited set, the frontier (unless it is the visited set itself) and its ids."""
+        front = 0 if self.frontier is self.visited else self.frontier.nbytes
+        return int(self.visited.nbytes + front + self.frontier_ids.nbytes)
 
 
 COLUMNS = ("enabled", "goal", "summary")
