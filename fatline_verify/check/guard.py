@@ -17,9 +17,10 @@ bound of what that step spends. When a step would pass the budget, the levels mo
 (in the search's own process) and the step is priced again; when it still does not fit, the level
 stops before the step, keeping nothing, and the search ends after the previous level, naming what
 the whole level would have needed (its candidates so far, extrapolated over the frontier). So no
-step is begun that the prices say passes the budget, and no level is refused that would have fitted
-by them. Before the level only its fixed part is checked (its frontier's columns, the visited set's
-copy in the merge, a first batch at the earlier levels' transitions a state or a small sample's).
+step is begun that the prices say passes the budget, and no level is refused on a presumed size.
+With several shards each gets an equal share of the room (their levels run at once). Before the
+level only its fixed part is checked (its frontier's columns, the visited set's copy in the merge, a
+first batch at the earlier levels' transitions a state or a small sample's).
 
 A **sample** of the frontier (:func:`measure`: an evenly spaced :func:`sample_size` states, expanded
 by the shards, their successors de-duplicated and looked up in the visited levels) prices a whole
@@ -30,7 +31,8 @@ does not fit is reported with the sample's price. Within a sample fewer successo
 within the whole level, so its rates are upper bounds in practice (n = 7's first level: 1.9x the
 distinct successors, 2x the new states; exact when the sample is the whole frontier). The old rule,
 a level as large as the frontier at 40 bytes a candidate, refused n = 8's first level at ~19G; the
-watch's prices at n = 7 were 1.1-1.3x the measured growth of the process's peak.
+watch priced it at 7.2G, 1.15x what the process's peak grew (6.3G), and n = 7's levels at 1.1-1.9x
+(docs/scale.md).
 
 Neither the watch nor the sample changes the search: a stopped level keeps nothing and the sample's
 expansion keeps no state, so states, ids, parents and summaries are the same under any budget that
