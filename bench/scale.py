@@ -16,6 +16,7 @@ the first one kept (fatline_verify/check/answers.py), for n up to `--warm-robots
     python bench/scale.py --robots 7       # n = 4..7 (n = 7 takes minutes)
     python bench/scale.py --workers 2      # also with two worker processes
     python bench/scale.py --robots 8 --max-memory 15G   # n = 8: 72-bit states, ranked keys
+    python bench/scale.py --robots 8 --max-memory 15G --keep runs/   # and keep each check's JSON
 """
 
 from __future__ import annotations
@@ -52,7 +53,9 @@ def run_measured(
     return wall, peak, out.stdout
 
 
-def fatline(n: int, workdir: Path, workers: int, answers: Path, max_memory: str | None = None) -> dict[str, float]:
+def fatline(
+    n: int, workdir: Path, workers: int, answers: Path, max_memory: str | None = None, keep: Path | None = None
+) -> dict[str, float]:
     out = workdir / f"n{n}-w{workers}.json"
     cmd = [sys.executable, "-m", "fatline_verify.cli", "check", str(ANCHOR / "spin-reading.toml"), "--robots", str(n)]
     cmd += ["--window", "9x9", "--bound", BOUND, "--max-states", "400000000", "--workers", str(workers)]
@@ -60,6 +63,8 @@ def fatline(n: int, workdir: Path, workers: int, answers: Path, max_memory: str 
     cmd += ["--max-memory", max_memory] if max_memory else []
     env = dict(os.environ, FATLINE_ANSWERS=str(answers))
     wall, peak, _ = run_measured(cmd, workdir, env)
+    if keep is not None:  # the check's JSON, for comparing runs (--workers, a resumed run) field by field
+        shutil.copyfile(out, keep / out.name)
     search = json.loads(out.read_text())["searches"][0]
     assert search["escaped"] == 0, f"n={n}: {search['escaped']} successors escape {BOUND}; raise BOUND"
     return {
@@ -98,7 +103,10 @@ def main() -> None:
     parser.add_argument("--spin-robots", type=int, default=7, help="run SPIN up to this robot count (default 7)")
     parser.add_argument("--warm-robots", type=int, default=6, help="a second run with kept answers up to this n")
     parser.add_argument("--max-memory", default=None, help="fatline's --max-memory (default: its own)")
+    parser.add_argument("--keep", type=Path, default=None, help="copy each first run's JSON (nN-wW.json) here")
     args = parser.parse_args()
+    if args.keep is not None:
+        args.keep.mkdir(parents=True, exist_ok=True)
     sys.path.insert(0, str(ROOT))
     from fatline_verify.text import table
 
@@ -111,7 +119,7 @@ def main() -> None:
         work = Path(tmp)
         fatline(3, work, 1, work / "answers-3")  # warm the compiled kernels' cache (numba's, not the answers)
         for n in range(4, args.robots + 1):
-            ours = fatline(n, work, 1, work / f"answers-{n}", args.max_memory)
+            ours = fatline(n, work, 1, work / f"answers-{n}", args.max_memory, args.keep)
             warm = fatline(n, work, 1, work / f"answers-{n}", args.max_memory) if n <= args.warm_robots else None
             if warm is not None:
                 assert (warm["states"], warm["verdicts"]) == (ours["states"], ours["verdicts"])
@@ -127,7 +135,7 @@ def main() -> None:
             else:
                 row += ["(not run)" if n > args.spin_robots else "(spin not installed)", "-", "-"]
             if args.workers > 1:
-                par = fatline(n, work, args.workers, work / f"answers-{n}-w", args.max_memory)
+                par = fatline(n, work, args.workers, work / f"answers-{n}-w", args.max_memory, args.keep)
                 assert (par["states"], par["verdicts"]) == (ours["states"], ours["verdicts"])
                 row += [f"{par['seconds']:.2f}", f"{ours['seconds'] / par['seconds']:.2f}x"]
             rows.append(row)

@@ -1,7 +1,8 @@
 """Memory: the machine's, the share a search may use (``--max-memory``), and sizes as text.
 
 A search holds packed keys and compact columns (:class:`fatline_verify.check.search.Exploration`);
-it stops cleanly before a level whose projected peak would pass the budget. Without ``--max-states``
+it stops cleanly before a step of a level whose peak, from the level's real figures, would pass the
+budget (:mod:`fatline_verify.check.guard`). Without ``--max-states``
 the budget is the only limit on states.
 """
 
@@ -17,9 +18,9 @@ BYTES_PER_STATE = 128
 holds 18 bytes a state, plus 8 for the visited set while the search runs)."""
 
 PEAK_FACTOR = 1.25
-"""A margin over the held arrays plus the next level's estimate (which counts the level's working
-copies: :func:`fatline_verify.check.search._next_level_estimate`) for what the estimate misses; the
-memory guard compares their product with ``--max-memory``."""
+"""A margin over the held arrays plus what a level adds at its peak (its working copies, priced from
+its real figures: :mod:`fatline_verify.check.guard`) for what the prices miss (the process itself,
+the engine's caches); the memory guard keeps their product within ``--max-memory``."""
 
 DEFAULT_SHARE = 0.5
 """The share of the machine's memory a search may use unless ``--max-memory`` says otherwise."""

@@ -232,6 +232,20 @@ def test_killed_at_a_random_level_resumes_to_the_identical_search(tmp_path, seed
     _same(whole, _explore(model, 4, tmp_path / "ck"))  # a finished checkpoint resumes to the same end
 
 
+def test_a_level_file_larger_than_other_files_read_back_resumes(tmp_path, monkeypatch):
+    """A level file is as large as its level (n = 8's initial level: 1.8 GB): the bound on files read
+    back (256 MiB) does not refuse it; the digest the manifest records still guards it."""
+    from fatline_verify.check import checkpoint
+
+    model = make_model()
+    whole = _explore(model, 4)
+    with pytest.raises(_Kill):
+        _explore(model, 4, tmp_path / "ck", kill_at=2)
+    assert max(p.stat().st_size for p in (tmp_path / "ck").glob("level-*.npz")) > 1000
+    monkeypatch.setattr(checkpoint, "MAX_READ", 1000)
+    _same(whole, _explore(model, 4, tmp_path / "ck"))
+
+
 def test_a_level_file_beyond_the_manifest_is_written_again(tmp_path):
     model = make_model()
     whole = _explore(model, 4)

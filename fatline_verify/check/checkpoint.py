@@ -35,7 +35,8 @@ from .. import __version__
 from ..errors import InvalidInput, OutputFailed
 from ..integrity import bytes_digest, is_digest, seal, sealed
 from ..model.config import Model, model_to_mapping
-from ..outputs import NotReadable, os_error_text, parse_json, read_regular, write_bytes
+from ..outputs import MAX_READ, NotReadable, os_error_text, parse_json, read_regular, write_bytes
+from ..resources import machine_memory
 from .shard import COLUMNS, SUMMARY_LENGTH
 
 if TYPE_CHECKING:
@@ -151,7 +152,7 @@ class Checkpoint:
                     "an empty one"
                 )
             try:
-                data = read_regular(path)
+                data = read_regular(path, limit=max(MAX_READ, machine_memory()))  # a level the search held
             except NotReadable as exc:
                 raise InvalidInput(
                     f"{self._where(path.name)}: {exc}; expected a level file fatline check wrote"

@@ -16,11 +16,13 @@ transitions are folded, batch by batch, into per-level summaries (their counts a
 bit, the least violating ``(source id, action)``), which is all a safety verdict needs; witnesses
 follow parents; the fair-cycle search recomputes the transitions it needs with the search's engine
 (:meth:`Exploration.followed_edges`), and so do the ``edge_*`` columns, on demand. Positions are
-decoded from keys on demand (:meth:`Exploration.state_array`). When ``max_bytes`` says the next level
-fits only that way, the levels move to disk (raw column files read back as memory maps, TLC's
-disk-backed state set being the model): the same results, less memory. The search stops cleanly,
-before the next level, when it holds more than ``max_states`` states or, levels on disk, its arrays
-would still pass ``max_bytes``.
+decoded from keys on demand (:meth:`Exploration.state_array`). The search stops cleanly, before the
+next level, when it holds more than ``max_states`` states. Under ``max_bytes`` the memory guard
+(:mod:`.guard`) watches each level's real figures as it runs: when they say the level fits only with
+the levels on disk, the levels move there (raw column files read back as memory maps, TLC's
+disk-backed state set being the model): the same results, less memory; when even then they do not
+fit, the level stops before the step that would pass the budget and the search ends there, as if
+stopped before the level.
 """
 
 from __future__ import annotations
@@ -41,6 +43,7 @@ from ..lemmas.registry import FLAG_BITS
 from ..model.config import Model
 from ..resources import PEAK_FACTOR
 from ..schedulers.base import Codec, Engine, TransitionSystem
+from . import guard
 from .engines import engine_for
 from .shard import COLUMNS, SUMMARY_COUNTS, Level, Shard, enabled_dtype, fold_summaries, followed, owners
 
@@ -89,8 +92,9 @@ class Exploration:
     limit: Limit = Limit.NONE
     after_violation: str = "stop"
     needed_bytes: int = 0
-    """When stopped by ``max_bytes``: the peak the next level was projected to need (held arrays plus
-    the next level's estimate, times :data:`~fatline_verify.resources.PEAK_FACTOR`)."""
+    """When stopped by ``max_bytes``: the peak the next level was projected to need (:mod:`.guard`: held
+    arrays plus the level's bytes, from a sample of its frontier or from the share of it expanded
+    before it stopped, times :data:`~fatline_verify.resources.PEAK_FACTOR`)."""
     initial_window: tuple[int, int] | None = None
     """The window the initial configurations came from, when not the bound."""
     on_disk: bool = False
@@ -473,14 +477,17 @@ def explore_keys(
     if count == 1:  # no copies: the shard's visited set is sorted keys, the frontier its last level
         pool.map("seed", [(np.sort(visited) if len(rec.keys) > 1 else visited, frontier, frontier_ids)])
     else:
-        owner_all, owner_front = owners(visited, count), owners(frontier, count)
-        pool.map(
-            "seed",
-            [
-                (np.sort(visited[owner_all == o]), frontier[owner_front == o], frontier_ids[owner_front == o])
-                for o in range(count)
-            ],
-        )
+        owner_all = owners(visited, count)
+        initial_level = len(frontier) == len(visited)  # the initial level is the whole visited set, sorted
+        owner_front = owner_all if initial_level else owners(frontier, count)
+        seeds = []
+        for o in range(count):
+            mine = visited[owner_all == o]
+            front = None if initial_level else frontier[owner_front == o]  # None: the shard's visited set
+            seeds.append((mine if initial_level else np.sort(mine), front, frontier_ids[owner_front == o]))
+            del mine, front
+        pool.map("seed", seeds)
+        del seeds
         del owner_all, owner_front
     del visited
     total = sum(len(k) for k in rec.keys)
@@ -489,26 +496,29 @@ def explore_keys(
         if max_states is not None and total > max_states:
             limit = Limit.MAX_STATES
             break
-        visited_bytes = sum(pool.map("visited_bytes", [()] * count))
-        held = rec.nbytes() + visited_bytes
-        projected = int((held + _next_level_estimate(rec, len(frontier), visited_bytes)) * PEAK_FACTOR)
-        if max_bytes is not None and projected > max_bytes and rec.disk is None:
-            rec.to_disk()  # the levels move to disk: the next level may fit that way
-            held = rec.nbytes() + visited_bytes
-            projected = int((held + _next_level_estimate(rec, len(frontier), visited_bytes)) * PEAK_FACTOR)
-        if max_bytes is not None and projected > max_bytes:
-            limit, needed = Limit.MAX_MEMORY, projected
-            break
+        room, spill = None, None
+        if max_bytes is not None:
+            start = total - len(frontier)  # a level's ids follow its keys' order
+            ids = np.arange(start, total, dtype=np.int64)
+            room, need, spill = _guard(pool, rec, frontier, ids, max_bytes, codec.dtype.itemsize, batch)
+            del ids
+            if room is None:
+                limit, needed = Limit.MAX_MEMORY, need
+                break
         if progress and isinstance(pool, LocalShards) and count == 1:
-            lv_parts = [pool.shards[0].expand(batch, partial(_tick, progress, level, total))]
+            lv_parts = [pool.shards[0].expand(batch, partial(_tick, progress, level, total), room, spill)]
         else:
-            lv_parts = pool.map("expand", [(batch,)] * count)
+            lv_parts = pool.map("expand", [(batch, None, room) + ((spill,) if spill else ())] * count)
+        if any(p.needed for p in lv_parts):  # a shard's real figures passed its share of the budget
+            level_need = count * max(p.needed for p in lv_parts)
+            limit, needed = Limit.MAX_MEMORY, int((_held(pool, rec, frontier)[0] + level_need) * PEAK_FACTOR)
+            break
         lv = _merge_levels(lv_parts, n)
         rec.add_expansion(lv)
         merged = pool.map("merge", [([p.routed[o] for p in lv_parts],) for o in range(count)])
-        new_keys = np.concatenate([m[0] for m in merged])
-        new_src = np.concatenate([m[1] for m in merged])
-        new_act = np.concatenate([m[2] for m in merged])
+        new_keys, new_src, new_act = (  # one shard: its arrays as they are (the frontier it keeps is these keys)
+            merged[0] if count == 1 else tuple(np.concatenate([m[k] for m in merged]) for k in range(3))
+        )
         bounds = np.cumsum([0] + [len(m[0]) for m in merged])
         del merged, lv_parts, lv
         if count > 1:
@@ -545,16 +555,61 @@ def _tick(progress: ProgressTick, level: int, states: int, done: int, frontier: 
     progress(level, done, frontier, states)
 
 
-def _next_level_estimate(rec: _Records, frontier: int, visited_bytes: int) -> int:
-    """Bytes the next level adds at its peak, for a level as much larger than the frontier as the last
-    one was than the one before (at least as large): per frontier state its id, enabled and goal (6)
-    and its candidate successors (about 1.5, 16 bytes each); per new state the candidates' sorted
-    set and its sort (40), the new level's columns (16) and its key and mask in the merged visited
-    set (9); and a copy of the visited set in the merge."""
-    growth = 1.0 if len(rec.keys) < 2 else max(1.0, len(rec.keys[-1]) / max(1, len(rec.keys[-2])))
-    key = rec.keys[-1].itemsize
-    new = frontier * growth
-    return int(frontier * (6 + 1.5 * (key + 8)) + new * (40 + 16 + key + 1) + visited_bytes)
+def _held(pool: ShardPool, rec: _Records, frontier: np.ndarray) -> tuple[int, int]:
+    """The bytes the search holds in memory (its columns, the frontier, its shards' visited sets and
+    frontiers: each buffer once, :func:`.guard.held_bytes`; shards in other processes as they report)
+    and its states."""
+    arrays = [frontier] + [a for name in _RECORD_COLUMNS for a in getattr(rec, name)]
+    remote = 0
+    if isinstance(pool, LocalShards):
+        arrays += [a for s in pool.shards for a in (s.visited, s.frontier, s.frontier_ids)]
+    else:
+        remote = sum(pool.map("visited_bytes", [()] * pool.count))
+    return guard.held_bytes(arrays) + remote, sum(len(k) for k in rec.keys)
+
+
+def _guard(pool: ShardPool, rec: _Records, frontier: np.ndarray, frontier_ids: np.ndarray, max_bytes: int,
+           key: int, batch: int) -> tuple[int | None, int, Callable[[], int] | None]:  # fmt: skip
+    """Before a level (:mod:`.guard`): ``(room, projected, spill)``: what each shard's expansion may add
+    (``None``: not even the level's fixed part fits, levels on disk; the search stops, ``projected``
+    saying what a sample of the frontier measures the level to need); and,
+    for shards in this process, ``spill``, which moves the levels to disk when the level's real figures
+    say so (:class:`.guard.Watch`). Shards in other processes cannot: for them the levels move to disk
+    before the level when it is priced above the budget, at a presumed rate and then at the rate a
+    sample of the frontier measures."""
+    count = pool.count
+    local = isinstance(pool, LocalShards)
+    held = partial(_held, pool, rec, frontier)
+
+    def price() -> int:
+        rates = guard.presumed(rec.summary, [len(g) for g in rec.goal])
+        need = 0 if rates is None else guard.projected(have, len(frontier), rates, visited, key, count)
+        if rates is None or need > max_bytes:
+            need = guard.projected(have, len(frontier), guard.measure(pool, rec.keys, frontier, frontier_ids),
+                                   visited, key, count)  # fmt: skip
+        return need
+
+    def spill() -> int:
+        """Move the levels to disk; the bytes that freed, a shard's share."""
+        if rec.disk is not None:
+            return 0
+        before = held()[0]
+        rec.to_disk()
+        return max(0, before - held()[0]) // count
+
+    have, visited = held()
+    fixed = guard.level_bytes(len(frontier), guard.Rates(0.0, 0.0, False), visited, key, count)
+    most = guard.per_state(rec.summary, [len(g) for g in rec.goal])
+    if most is None:  # no level expanded yet: a small sample says what a batch spends
+        most = guard.measure(pool, rec.keys, frontier, frontier_ids, guard.FIRST_SAMPLE).transitions
+    fixed += guard.first_batch(len(frontier), batch, most)
+    if rec.disk is None and (int(max_bytes / PEAK_FACTOR) - have < fixed or (not local and price() > max_bytes)):
+        rec.to_disk()
+        have, visited = held()
+    room = int(max_bytes / PEAK_FACTOR) - have
+    if room < fixed:
+        return None, price(), None
+    return room // count, 0, spill if local and rec.disk is None else None
 
 
 def _build(

@@ -23,6 +23,7 @@ from ..schedulers.base import Engine, TransitionSystem, expand_keys
 from ..schedulers.systems import system_for
 from . import keys as keyset
 from .engines import engine_for
+from .guard import CONSOLIDATE, Watch
 
 _MIX = np.uint64(0x9E3779B97F4A7C15)
 
@@ -117,6 +118,9 @@ class Level:
     routed: list[tuple[np.ndarray, np.ndarray, np.ndarray]]
     """Per owner shard: the candidate successors ``(key, source id, action)`` it must de-duplicate,
     each key once, with its least ``(source id, action)`` among this shard's transitions."""
+    needed: int = 0
+    """Not 0: the expansion stopped at its budget (:class:`.guard.Watch`), nothing kept; the bytes the
+    whole level would have added, extrapolated."""
 
 
 def enabled_dtype(n: int) -> Any:
@@ -148,9 +152,10 @@ class Shard:
         self.lemmas = registered()
         """Registered step lemmas: judged on every transition, by one numpy pass over its positions."""
 
-    def seed(self, visited: np.ndarray, frontier: np.ndarray, frontier_ids: np.ndarray) -> int:
-        """Start (or resume) with these owned keys: ``visited`` sorted, the frontier a sorted subset."""
-        self.visited, self.frontier, self.frontier_ids = visited, frontier, frontier_ids
+    def seed(self, visited: np.ndarray, frontier: np.ndarray | None, frontier_ids: np.ndarray) -> int:
+        """Start (or resume) with these owned keys: ``visited`` sorted, the frontier a sorted subset
+        (``None``: all of them, one array, not a copy sent beside it)."""
+        self.visited, self.frontier, self.frontier_ids = visited, visited if frontier is None else frontier, frontier_ids
         return len(self.visited)
 
     def _batches(
@@ -184,15 +189,29 @@ class Shard:
             if progress:
                 progress(min(start + batch, len(keys)), len(keys))
 
-    def expand(self, batch: int, progress: Callable[[int, int], None] | None = None) -> Level:
+    def expand(
+        self,
+        batch: int,
+        progress: Callable[[int, int], None] | None = None,
+        room: int | None = None,
+        spill: Callable[[], int] | None = None,
+    ) -> Level:
         """Expand the whole frontier, ``batch`` states at a time (``progress(done, frontier)`` after each):
         per state its enabled robots and goal, the transitions folded into a summary as they come, and
-        the followed successors routed to their owners."""
+        the followed successors routed to their owners. ``room``: the bytes the level may add here; it
+        stops (:attr:`Level.needed`) before a consolidation or a merge whose peak, computed from what it
+        has gathered, would pass that, unless ``spill`` (the search's levels moved to disk) makes room
+        (:class:`.guard.Watch`)."""
+        watch = None
+        if room is not None:
+            size = self.codec.dtype.itemsize
+            watch = Watch(room, len(self.frontier), len(self.visited), size, self.count, spill)
         ids, enabled, goal, summaries = [], [], [], []
         ck, cs, ca = np.zeros(0, dtype=self.codec.dtype), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int32)
         parts: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
-        pending = 0
+        pending = done = 0
         for tr in self._batches(self.frontier, self.frontier_ids, batch, progress):
+            done += len(tr.ids)
             ids.append(tr.ids.astype(np.int32) if len(tr.ids) and tr.ids[-1] < 2**31 - 1 else tr.ids)
             enabled.append(tr.enabled)
             goal.append(tr.goal)
@@ -203,12 +222,17 @@ class Shard:
             bs = tr.src[follow][first]
             parts.append((bk, bs.astype(np.int32) if len(bs) and bs.max() < 2**31 - 1 else bs, tr.action[follow][first]))
             pending += len(bk)
+            transitions = len(tr.src)
             del tr
-            if pending > _CONSOLIDATE:  # bound the level's candidates: fold them into one sorted set
+            if watch is not None and not watch.fits(done, len(ck) + pending, transitions=transitions):
+                return _stopped(watch, self.codec.n)
+            if pending > CONSOLIDATE:  # bound the level's candidates: fold them into one sorted set
                 ck, cs, ca = _first_of(ck, cs, ca, parts, self.codec.dtype)
                 parts, pending = [], 0
         ck, cs, ca = _first_of(ck, cs, ca, parts, self.codec.dtype)
         del parts
+        if watch is not None and not watch.fits(done, len(ck), final=True):
+            return _stopped(watch, self.codec.n)
         owner = owners(ck, self.count)
         routed = [(ck[owner == o], cs[owner == o], ca[owner == o]) for o in range(self.count)]
         if self.count == 1:
@@ -269,7 +293,9 @@ class Shard:
         self.frontier_ids = ids
 
     def visited_bytes(self) -> int:
-        return int(self.visited.nbytes + self.frontier.nbytes + self.frontier_ids.nbytes)
+        """Bytes of the visited set, the frontier (unless it is the visited set itself) and its ids."""
+        front = 0 if self.frontier is self.visited else self.frontier.nbytes
+        return int(self.visited.nbytes + front + self.frontier_ids.nbytes)
 
 
 COLUMNS = ("enabled", "goal", "summary")
@@ -292,8 +318,10 @@ def _in_action_order(col: dict[str, np.ndarray], after_violation: str) -> None:
     col["key"] = full[order][follow[order]]
 
 
-_CONSOLIDATE = 1 << 23
-"""Candidate successors a level gathers before folding them into its sorted set (bounds the peak)."""
+def _stopped(watch: Watch, n: int) -> Level:
+    """An expansion stopped at its budget: nothing kept but what it would have needed."""
+    ids, enabled, goal = np.zeros(0, dtype=np.int64), np.zeros(0, dtype=enabled_dtype(n)), np.zeros(0, dtype=bool)
+    return Level(ids, enabled, goal, empty_summary(), [], max(1, watch.needed))
 
 
 def _first_of(
