@@ -198,9 +198,7 @@ def _seen(i: int, decision: Decision, state: Sequence[Point], model: Model | Non
     index = {p: j for j, p in enumerate(state)}
     ox, oy = state[i]
     if not decision.classification and model is not None:
-        seen_ids = [
-            f"r{j}" for j, p in enumerate(state) if j != i and model.sees((p[0] - ox) ** 2 + (p[1] - oy) ** 2)
-        ]
+        seen_ids = [f"r{j}" for j, p in enumerate(state) if j != i and model.sees((p[0] - ox) ** 2 + (p[1] - oy) ** 2)]
         return "sees " + ", ".join(seen_ids) if seen_ids else "sees no robot"
     seen = [
         f"r{index[(ox + c[0], oy + c[1])]} in {' and '.join(sorted(m)) or 'no set'}" for c, m in decision.classification

@@ -91,7 +91,7 @@ def save_answers(path: Path | None, decisions: np.ndarray, pairs: np.ndarray) ->
     body = buffer.getvalue()
     try:
         write_bytes(path, bytes_digest(body).encode("ascii") + b"\n" + body)
-    except Exception:  # noqa: BLE001 - a cache that cannot be written is no cache, not a failed check
+    except Exception:  # a cache that cannot be written is no cache, not a failed check
         return
 
 

@@ -134,7 +134,8 @@ def validate_bounds(
             what = "window" if bound == window else "bound"
             bw, bh = bound
             raise InvalidInput(
-                f"{what}={bw}x{bh} with robots={n}: a state does not pack or rank into 63 bits; expected a smaller {what} "
+                f"{what}={bw}x{bh} with robots={n}: a state does not pack or rank into 63 bits; "
+                f"expected a smaller {what} "
                 "or fewer robots"
             ) from None
 

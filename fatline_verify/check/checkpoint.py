@@ -6,15 +6,15 @@ again continues to the identical result, and a run killed at any instant loses a
 work. The visited set is the union of the levels' keys and the frontier is the last level, so the level
 files are the shards: ``level-00000.npz`` holds the initial keys, ``level-L.npz`` the states first
 reached at depth L (keys, parents, actions) and the expansion of level L-1 (per state: enabled, goal;
-the summary of its transitions: counts and the least violating one per flag bit). Each file is written to a temporary name (unique
-to the process) and renamed, then ``manifest.json`` (likewise, last) records how many levels are
-complete and the SHA-256 of every level file; a level file beyond the manifest is the remains of a
-killed write and is written again, and a level file (or a manifest) whose content does not match its
-digest is refused in one line, never searched on from (a flipped bit in a transition's flags would
-otherwise be a verdict nobody computed). The manifest names the run — model, robots, bound, a digest of
-the initial keys, ``after_violation`` — and a directory holding another run is refused; the engine and
-the number of workers are not part of it (they do not change the result), nor are the limits: a run
-stopped by ``--max-states`` resumes further with a larger one.
+the summary of its transitions: counts and the least violating one per flag bit). Each file is written
+to a temporary name (unique to the process) and renamed, then ``manifest.json`` (likewise, last) records
+how many levels are complete and the SHA-256 of every level file; a level file beyond the manifest is
+the remains of a killed write and is written again, and a level file (or a manifest) whose content does
+not match its digest is refused in one line, never searched on from (a flipped bit in a transition's
+flags would otherwise be a verdict nobody computed). The manifest names the run — model, robots, bound,
+a digest of the initial keys, ``after_violation`` — and a directory holding another run is refused; the
+engine and the number of workers are not part of it (they do not change the result), nor are the limits:
+a run stopped by ``--max-states`` resumes further with a larger one.
 """
 
 from __future__ import annotations
@@ -105,7 +105,8 @@ class Checkpoint:
         if doc.get("version") != VERSION:
             raise InvalidInput(
                 f"{self._where(MANIFEST)}: version={str(doc.get('version'))[:20]!r} (written by another version of "
-                f"fatline, whose level files version {VERSION} does not read); expected an empty directory to start afresh"
+                f"fatline, whose level files version {VERSION} does not read); "
+                "expected an empty directory to start afresh"
             )
         if not sealed(doc, self.directory / MANIFEST):
             raise OutputFailed(

@@ -156,9 +156,7 @@ class Exploration:
         """Every state's depth (its level), computed from the level sizes."""
         got = self._cache.get("depth")
         if got is None:
-            got = self._cache["depth"] = np.repeat(
-                np.arange(len(self.level_sizes), dtype=np.int32), self.level_sizes
-            )
+            got = self._cache["depth"] = np.repeat(np.arange(len(self.level_sizes), dtype=np.int32), self.level_sizes)
         return got  # type: ignore[no-any-return]
 
     @property
@@ -641,8 +639,8 @@ def _build(
     id_type = np.int32 if total < 2**31 - 1 else np.int64
     n_expanded = sum(len(g) for g in rec.goal)
     edtype = enabled_dtype(n)
-    enabled_parts = rec.enabled + [np.zeros(total - n_expanded, dtype=edtype)]
-    goal_parts = rec.goal + [np.zeros(total - n_expanded, dtype=bool)]
+    enabled_parts = [*rec.enabled, np.zeros(total - n_expanded, dtype=edtype)]
+    goal_parts = [*rec.goal, np.zeros(total - n_expanded, dtype=bool)]
     rec.enabled, rec.goal = enabled_parts, goal_parts
     summary = fold_summaries(rec.summary)
     return Exploration(

@@ -65,7 +65,12 @@ def summarise(src: np.ndarray, action: np.ndarray, flags: np.ndarray, fits: np.n
     not reached through them)."""
     out = empty_summary()
     core = fits & ((flags & CORE_FLAGS) != 0)
-    out[:4] = (len(src), int((~fits).sum()), int((~exact).sum()), 0 if after_violation == "continue" else int(core.sum()))
+    out[:4] = (
+        len(src),
+        int((~fits).sum()),
+        int((~exact).sum()),
+        0 if after_violation == "continue" else int(core.sum()),
+    )
     for bit in range(FLAG_BITS):
         hit = np.flatnonzero(flags & (1 << bit))
         if len(hit):
@@ -155,7 +160,11 @@ class Shard:
     def seed(self, visited: np.ndarray, frontier: np.ndarray | None, frontier_ids: np.ndarray) -> int:
         """Start (or resume) with these owned keys: ``visited`` sorted, the frontier a sorted subset
         (``None``: all of them, one array, not a copy sent beside it)."""
-        self.visited, self.frontier, self.frontier_ids = visited, visited if frontier is None else frontier, frontier_ids
+        self.visited, self.frontier, self.frontier_ids = (
+            visited,
+            visited if frontier is None else frontier,
+            frontier_ids,
+        )
         return len(self.visited)
 
     def _batches(
@@ -220,7 +229,9 @@ class Shard:
             # A key's first occurrence is its least (source, action): batches ascend, so do their firsts.
             bk, first = keyset.unique_first(tr.key)
             bs = tr.src[follow][first]
-            parts.append((bk, bs.astype(np.int32) if len(bs) and bs.max() < 2**31 - 1 else bs, tr.action[follow][first]))
+            parts.append(
+                (bk, bs.astype(np.int32) if len(bs) and bs.max() < 2**31 - 1 else bs, tr.action[follow][first])
+            )
             pending += len(bk)
             transitions = len(tr.src)
             del tr
@@ -365,4 +376,14 @@ def _concat(parts: list[np.ndarray], dtype: object) -> np.ndarray:
     return np.concatenate(parts) if parts else np.zeros(0, dtype=dtype)  # type: ignore[call-overload]
 
 
-__all__ = ["COLUMNS", "Level", "Shard", "Transitions", "enabled_dtype", "fold_summaries", "followed", "owners", "summarise"]
+__all__ = [
+    "COLUMNS",
+    "Level",
+    "Shard",
+    "Transitions",
+    "enabled_dtype",
+    "fold_summaries",
+    "followed",
+    "owners",
+    "summarise",
+]

@@ -51,7 +51,6 @@ def schema() -> dict[str, Any]:
 # --- to JSON ---------------------------------------------------------------------------------------
 
 
-
 def run_to_json(run: Run, origin: dict[str, Any] | None = None, focus: str | None = None) -> dict[str, Any]:
     """A whole run as a trace document (schema-valid). ``focus`` names the lemma the trace witnesses
     (default: the first violation of a violating run, or ``progress`` for a deadlock)."""
