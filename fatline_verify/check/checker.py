@@ -21,7 +21,7 @@ import numpy as np
 
 from ..errors import InvalidInput
 from ..lemmas.properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason, Verdict
-from ..lemmas.registry import registered
+from ..lemmas.registry import StepLemma, registered
 from ..model.config import Model
 from ..model.lattice import KeyCodec, RankedCodec
 from ..model.numbers import format_number
@@ -432,12 +432,14 @@ def explore_robots(
     return ex
 
 
-def _result(ex: Exploration, lemma: Lemma, verdict: Verdict, reason: str = "", doc: Any = None) -> LemmaResult:
+def _result(
+    ex: Exploration, lemma: Lemma | StepLemma, verdict: Verdict, reason: str = "", doc: Any = None
+) -> LemmaResult:
     rounds = len(doc["rounds"]) if doc else None
     return LemmaResult(lemma, verdict, ex.n, ex.start_window, reason, rounds, doc)
 
 
-def _bounded(ex: Exploration, lemma: Lemma, liveness: bool) -> LemmaResult:
+def _bounded(ex: Exploration, lemma: Lemma | StepLemma, liveness: bool) -> LemmaResult:
     """No violation found: HOLDS_WITHIN_BOUNDS, unless a bound cut the search short."""
     if ex.limit is Limit.MAX_MEMORY:
         return _result(
@@ -480,7 +482,8 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
     out: dict[Any, LemmaResult] = {}
     expanded = ex.expanded
     extras = registered()
-    for lemma in (*SAFETY, *extras):
+    step: tuple[Lemma | StepLemma, ...] = (*SAFETY, *extras)
+    for lemma in step:
         first = ex.least_violating(lemma.flag)  # the search's summaries: the least (source, action)
         if first is not None:
             doc = transition_witness(ex, *first, lemma)
@@ -528,14 +531,15 @@ def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
     return _bounded(ex, Lemma.APPROACH, liveness=True)
 
 
-def witness_path(directory: Path, prefix: str, lemma: Lemma, robots: int) -> Path:
+def witness_path(directory: Path, prefix: str, lemma: Lemma | StepLemma, robots: int) -> Path:
     """Where :func:`write_witnesses` puts the witness of ``lemma`` for ``robots`` robots."""
     return child(directory, f"{prefix}{lemma.value}-n{robots}", ".json")
 
 
 def witness_paths(plan: CheckPlan, directory: Path, prefix: str) -> list[Path]:
     """Every file a check of ``plan`` may write into ``directory`` (checked before the run)."""
-    return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in (*CHECKED, *registered())]
+    lemmas: tuple[Lemma | StepLemma, ...] = (*CHECKED, *registered())
+    return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in lemmas]
 
 
 def write_witnesses(result: CheckResult, directory: Path, prefix: str) -> dict[tuple[str, int], str]:

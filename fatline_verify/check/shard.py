@@ -11,7 +11,7 @@ independent of P.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -336,7 +336,7 @@ def _stopped(watch: Watch, n: int) -> Level:
 
 
 def _first_of(
-    ck: np.ndarray, cs: np.ndarray, ca: np.ndarray, parts: list[tuple[np.ndarray, ...]], dtype: object
+    ck: np.ndarray, cs: np.ndarray, ca: np.ndarray, parts: Sequence[tuple[np.ndarray, ...]], dtype: object
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The sorted set of ``ck`` and the keys of ``parts`` (later ones after), each key once with its
     first ``(source, action)`` in that order (which is its least: sources ascend)."""

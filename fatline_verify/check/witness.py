@@ -16,6 +16,7 @@ import numpy as np
 
 from ..errors import FatlineError
 from ..lemmas.properties import Lemma
+from ..lemmas.registry import StepLemma
 from ..trace.simulate import Outcome, Run, outcome_after
 from ..trace.traces import replayed_document
 from .search import Exploration
@@ -39,7 +40,7 @@ def _follow(ex: Exploration, start_id: int, steps: list[tuple[int, int]]) -> tup
     return initial, played
 
 
-def _finish(ex: Exploration, run: Run, lemma: Lemma) -> dict[str, Any]:
+def _finish(ex: Exploration, run: Run, lemma: Lemma | StepLemma) -> dict[str, Any]:
     origin = {
         "tool": "fatline check",
         "lemma": lemma.value,
@@ -49,13 +50,13 @@ def _finish(ex: Exploration, run: Run, lemma: Lemma) -> dict[str, Any]:
     }
     if ex.initial_window is not None:
         origin["bound"] = list(ex.window)
-    doc = replayed_document(run, origin, lemma)
+    doc = replayed_document(run, origin, lemma.value)
     if doc["violation"] is None or doc["violation"]["property"] != lemma.value:
         raise EngineDisagreement(f"{lemma} witness: the executable model does not show the violation")
     return doc
 
 
-def transition_witness(ex: Exploration, src: int, action: int, lemma: Lemma) -> dict[str, Any]:
+def transition_witness(ex: Exploration, src: int, action: int, lemma: Lemma | StepLemma) -> dict[str, Any]:
     """A shortest path to the state ``src`` and the violating step ``action`` from it."""
     steps = [*ex.path(src), (src, action)]
     initial, played = _follow(ex, src, steps)

@@ -14,7 +14,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import StrEnum
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # the registry imports this module
+    from .registry import StepLemma
 
 
 class Judged(StrEnum):
@@ -131,7 +134,7 @@ class StopReason(StrEnum):
 class LemmaResult:
     """One lemma's verdict for one robot count, with the bounds and counts behind it."""
 
-    lemma: Lemma
+    lemma: Lemma | StepLemma
     verdict: Verdict
     robots: int
     window: tuple[int, int]

@@ -164,6 +164,8 @@ class Codec(Protocol):
     byte string when one word is not enough) and back."""
 
     dtype: np.dtype[Any]
+    n: int
+    """The robots a state holds."""
 
     def fits(self, canon: np.ndarray) -> np.ndarray:
         """Which canonical states lie inside the window."""
