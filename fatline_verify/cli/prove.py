@@ -8,7 +8,7 @@ import time
 from typing import Any
 
 from ..junit import claim_junit, prove_suites, write_junit
-from ..lemmas.properties import Lemma
+from ..lemmas.properties import PROVED_LEMMAS, Lemma
 from ..outputs import Kind, child, claim_dir, claim_file, claim_files, write_json
 from ..progress import Progress
 from ..text import prove_lines
@@ -30,16 +30,9 @@ from .common import (
 
 MAX_SLOTS = 8
 MAX_JOBS = 256
-LEMMA_CHOICES = (
-    Lemma.NO_COLLISION,
-    Lemma.CONNECTIVITY,
-    Lemma.RMA_FIXED,
-    Lemma.APPROACH,
-    Lemma.PROGRESS,
-    Lemma.TERMINATION,
-)
-"""The lemmas ``--lemma`` offers: :data:`fatline_verify.prove.prover.LEMMAS`, named here without
-importing z3 when the parser is built (a test keeps the two equal)."""
+LEMMA_CHOICES = PROVED_LEMMAS
+"""The lemmas ``--lemma`` offers: the prover's (:data:`~fatline_verify.lemmas.properties.PROVED_LEMMAS`,
+named without z3, so building the parser does not load it)."""
 DEFAULT_SLOTS, DEFAULT_TIMEOUT = 3, 60.0
 """The prover's defaults (:data:`fatline_verify.prove.prover.DEFAULT_SLOTS`, ``DEFAULT_TIMEOUT``), named here
 without importing z3 (a test keeps them equal)."""

@@ -98,6 +98,18 @@ CHECKED: tuple[Lemma, ...] = tuple(lemma for lemma in Lemma if SPECS[lemma].chec
 SAFETY: tuple[Lemma, ...] = tuple(lemma for lemma in CHECKED if SPECS[lemma].judged is Judged.STEP)
 """Lemmas about a single step; a violating step carries the witness."""
 
+PROVED_LEMMAS: tuple[Lemma, ...] = (
+    Lemma.NO_COLLISION,
+    Lemma.CONNECTIVITY,
+    Lemma.RMA_FIXED,
+    Lemma.APPROACH,
+    Lemma.PROGRESS,
+    Lemma.TERMINATION,
+)
+"""The lemmas the prover has obligations for, in its results order (progress and termination: the
+liveness obligations, for a rule set that declares them): named here, without z3, for the prover
+(:data:`fatline_verify.prove.tasks.LEMMAS`), ``fatline prove --lemma`` and the report's columns."""
+
 FLAG = {lemma: SPECS[lemma].flag for lemma in SAFETY}
 """Bit of each step lemma in a transition's violation flags."""
 

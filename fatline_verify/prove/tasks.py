@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..errors import InvalidInput
-from ..lemmas.properties import Lemma, Verdict
+from ..lemmas.properties import PROVED_LEMMAS, Lemma, Verdict
 from ..model.config import Model
 from ..model.options import CATALOGUE, Scheduler
 from ..rules import registry
@@ -89,7 +89,7 @@ DEFAULT_SLOTS = 3
 DEFAULT_TIMEOUT = 60.0
 """Solver seconds per obligation, unless asked otherwise."""
 
-LEMMAS = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY, Lemma.RMA_FIXED, Lemma.APPROACH, Lemma.PROGRESS, Lemma.TERMINATION)
+LEMMAS = PROVED_LEMMAS
 """The lemmas the prover decides, in results order (progress and termination: the liveness
 obligations, for a rule set that declares them, :mod:`fatline_verify.prove.smt.liveness`)."""
 

@@ -12,7 +12,7 @@ import re
 from collections.abc import Callable
 from typing import Any
 
-from ..lemmas.properties import Lemma
+from ..lemmas.properties import PROVED_LEMMAS
 from ..model.config import IMPLIED
 from ..model.options import CATALOGUE
 from ..prove.coverage import LemmaVerdict, lemma_verdicts
@@ -20,15 +20,8 @@ from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, violation_line
 from .data import ModelReport
 
 RANK = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
-PROVER_LEMMAS = (
-    Lemma.NO_COLLISION,
-    Lemma.CONNECTIVITY,
-    Lemma.RMA_FIXED,
-    Lemma.APPROACH,
-    Lemma.PROGRESS,
-    Lemma.TERMINATION,
-)
-"""The prover's lemmas, in its results order (:data:`fatline_verify.prove.prover.LEMMAS`, without z3)."""
+PROVER_LEMMAS = PROVED_LEMMAS
+"""The prover's lemmas, in its results order: the report's prove columns."""
 
 VIEWER_JS = """
 document.querySelectorAll('.viewer').forEach(function (v) {
