@@ -33,9 +33,10 @@ from ..trace.traces import approach_stuck
 from . import keys as keyset
 from .checkpoint import claim_checkpoint
 from .engines import engine_for
+from .exploration import Exploration, Limit
 from .initial import initial_array, initial_keys
 from .liveness import fair_cycles
-from .search import Exploration, Limit, explore_keys
+from .search import explore_keys
 from .witness import lasso_run, lasso_witness, state_witness, transition_witness
 from .workers import Cluster, require_dask
 

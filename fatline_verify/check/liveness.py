@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .search import Exploration
+from .exploration import Exploration
 
 if TYPE_CHECKING:
     import networkx as nx

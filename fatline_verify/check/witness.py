@@ -19,7 +19,7 @@ from ..lemmas.properties import Lemma
 from ..lemmas.registry import StepLemma
 from ..trace.simulate import Outcome, Run, outcome_after
 from ..trace.traces import replayed_document
-from .search import Exploration
+from .exploration import Exploration
 
 
 class EngineDisagreement(FatlineError):

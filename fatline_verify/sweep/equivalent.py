@@ -38,8 +38,8 @@ from functools import partial
 import numpy as np
 
 from ..check.engines import engine_for
+from ..check.exploration import Exploration
 from ..check.liveness import fair_cycles
-from ..check.search import Exploration
 from ..lemmas.properties import CHECKED, SAFETY, Lemma
 from ..model.config import Model
 from ..schedulers.base import expand_keys
