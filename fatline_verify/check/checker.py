@@ -20,31 +20,28 @@ from typing import Any
 import numpy as np
 
 from ..errors import InvalidInput
-from ..lemmas.properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason, Verdict
+from ..lemmas.properties import CHECKED, Lemma, LemmaResult, Verdict
 from ..lemmas.registry import StepLemma, registered
 from ..model.config import Model
 from ..model.lattice import KeyCodec, RankedCodec
 from ..model.numbers import format_number
 from ..outputs import Kind, child
-from ..resources import default_max_memory, format_size, machine_memory
+from ..resources import default_max_memory, format_size
 from ..schedulers.base import ENGINES, unknown_engine
 from ..schedulers.systems import system_for
-from ..trace.traces import approach_stuck
 from . import keys as keyset
 from .checkpoint import claim_checkpoint
 from .engines import engine_for
-from .exploration import Exploration, Limit
+from .exploration import Exploration
 from .initial import initial_array, initial_keys
-from .liveness import fair_cycles
 from .search import explore_keys
-from .witness import lasso_run, lasso_witness, state_witness, transition_witness
+from .verdicts import lemma_verdicts
 from .workers import Cluster, require_dask
 
 ProgressFn = Callable[[str, int, int, str], None]
 """``progress(stage, done, total, note)``: the stage (robot count and BFS level), states of the level's
 frontier expanded so far, the frontier's size, and a note (states found so far)."""
 
-MAX_LASSOS_TRIED = 20
 CHECKER_VERSION = 2
 """Bumped whenever the checker's semantics change (part of the report cache's fingerprint)."""
 
@@ -431,105 +428,6 @@ def explore_robots(
     if pool is not None:
         pool.close()
     return ex
-
-
-def _result(
-    ex: Exploration, lemma: Lemma | StepLemma, verdict: Verdict, reason: str = "", doc: Any = None
-) -> LemmaResult:
-    rounds = len(doc["rounds"]) if doc else None
-    return LemmaResult(lemma, verdict, ex.n, ex.start_window, reason, rounds, doc)
-
-
-def _bounded(ex: Exploration, lemma: Lemma | StepLemma, liveness: bool) -> LemmaResult:
-    """No violation found: HOLDS_WITHIN_BOUNDS, unless a bound cut the search short."""
-    if ex.limit is Limit.MAX_MEMORY:
-        return _result(
-            ex,
-            lemma,
-            Verdict.INCONCLUSIVE,
-            StopReason.MAX_MEMORY.describe(
-                f"{ex.n_states:,} states found, {ex.n_states - int(ex.expanded.sum()):,} of them unexplored; the next "
-                f"level needs about {format_size(ex.needed_bytes)}; "
-                + (
-                    f"rerun with --max-memory {format_size(ex.needed_bytes)} or more (deeper levels may need more)"
-                    if ex.needed_bytes <= machine_memory()
-                    else f"more than this machine's {format_size(machine_memory())}: share it with --cluster, or a "
-                    "smaller --bound or --window"
-                )
-            ),
-        )
-    if ex.truncated:
-        return _result(
-            ex,
-            lemma,
-            Verdict.INCONCLUSIVE,
-            StopReason.MAX_STATES.describe(
-                f"{ex.n_states:,} states found, {ex.n_states - int(ex.expanded.sum()):,} of them unexplored; "
-                f"rerun with --max-states {ex.n_states:,} or more (deeper levels may need more)"
-            ),
-        )
-    if liveness and ex.escaped:
-        off = f", {ex.off_lattice} of them off the lattice" if ex.off_lattice else ""
-        return _result(ex, lemma, Verdict.INCONCLUSIVE, StopReason.WINDOW.describe(f"{ex.escaped} transitions{off}"))
-    w, h = ex.window
-    off = f"; {ex.off_lattice} transitions off the lattice not followed" if ex.off_lattice else ""
-    iw, ih = ex.start_window
-    where = f"window {w}x{h}" if ex.initial_window is None else f"window {iw}x{ih}, bound {w}x{h}"
-    return _result(ex, lemma, Verdict.HOLDS_WITHIN_BOUNDS, f"{ex.n} robots, {where}, {ex.n_states} states{off}")
-
-
-def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
-    """Every lemma's verdict on one explored graph, witnesses replayed."""
-    out: dict[Any, LemmaResult] = {}
-    expanded = ex.expanded
-    extras = registered()
-    step: tuple[Lemma | StepLemma, ...] = (*SAFETY, *extras)
-    for lemma in step:
-        first = ex.least_violating(lemma.flag)  # the search's summaries: the least (source, action)
-        if first is not None:
-            doc = transition_witness(ex, *first, lemma)
-            out[lemma] = _result(ex, lemma, Verdict.VIOLATED, f"a violating {ex.system.step_word}", doc)
-        else:
-            out[lemma] = _bounded(ex, lemma, liveness=False)
-
-    terminal = expanded & (ex.enabled == 0)
-    deadlocks = np.nonzero(terminal & ~ex.goal)[0]
-    if len(deadlocks):
-        for lemma in (Lemma.PROGRESS, Lemma.TERMINATION):
-            doc = state_witness(ex, int(deadlocks[0]), lemma)
-            out[lemma] = _result(ex, lemma, Verdict.VIOLATED, "a deadlock: no robot enabled, no line", doc)
-    else:
-        out[Lemma.PROGRESS] = _bounded(ex, Lemma.PROGRESS, liveness=False)
-        lassos = fair_cycles(ex, expanded & ~ex.goal)
-        if lassos:
-            doc = lasso_witness(lasso_run(ex, lassos[0].start, lassos[0].cycle), ex, Lemma.TERMINATION)
-            out[Lemma.TERMINATION] = _result(
-                ex, Lemma.TERMINATION, Verdict.VIOLATED, "a fair cycle never forms the line", doc
-            )
-        else:
-            out[Lemma.TERMINATION] = _bounded(ex, Lemma.TERMINATION, liveness=True)
-    out[Lemma.APPROACH] = _approach(ex, terminal)
-    return [out[lemma] for lemma in (*CHECKED, *extras)]
-
-
-def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:
-    """Lemma 5: a terminal state with a robot left of the RMA, or a fair cycle where one never moves right."""
-    candidates = np.nonzero(terminal)[0]  # only terminal states are decoded
-    xs = ex.system.array_positions(ex.state_array(candidates))[:, :, 0]
-    stuck = candidates[xs.min(axis=1) < xs.max(axis=1)]
-    if len(stuck):
-        doc = state_witness(ex, int(stuck[0]), Lemma.APPROACH)
-        return _result(ex, Lemma.APPROACH, Verdict.VIOLATED, "no robot can move and some are left of the RMA", doc)
-    lassos = fair_cycles(ex, ex.expanded)
-    for lasso in lassos[:MAX_LASSOS_TRIED]:
-        run = lasso_run(ex, lasso.start, lasso.cycle)
-        if approach_stuck(run):
-            doc = lasso_witness(run, ex, Lemma.APPROACH)
-            return _result(ex, Lemma.APPROACH, Verdict.VIOLATED, "a fair cycle where a robot never moves right", doc)
-    if lassos:
-        detail = f"{min(len(lassos), MAX_LASSOS_TRIED)} of {len(lassos)} fair cycles examined"
-        return _result(ex, Lemma.APPROACH, Verdict.INCONCLUSIVE, StopReason.CYCLE_NOT_DECISIVE.describe(detail))
-    return _bounded(ex, Lemma.APPROACH, liveness=True)
 
 
 def witness_path(directory: Path, prefix: str, lemma: Lemma | StepLemma, robots: int) -> Path:

@@ -146,7 +146,8 @@ def _global_on_lattice(model: Model, slots: int) -> tuple[int, dict[str, Any]] |
     :data:`GLOBAL_WINDOW`, every activation set the scheduler allows): its shortest connectivity
     witness, when that is one round long, is a counterexample of the global form, already replayed by
     the executable model. ``(slots, trace)`` with the robots besides r, or ``None``."""
-    from ..check.checker import CheckPlan, explore_robots, lemma_verdicts
+    from ..check.checker import CheckPlan, explore_robots
+    from ..check.verdicts import lemma_verdicts
 
     for n in range(2, slots + 2):
         plan = CheckPlan.of(model, (n, n), GLOBAL_WINDOW, max_states=GLOBAL_STATES, engine="fast")

@@ -18,8 +18,8 @@ from typing import Any
 
 import numpy as np
 
-from ..check.checker import lemma_verdicts
 from ..check.search import explore
+from ..check.verdicts import lemma_verdicts
 from ..errors import FatlineError
 from ..lemmas.properties import Lemma, Verdict
 from ..model.config import Model, model_from_mapping

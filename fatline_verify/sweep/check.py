@@ -83,7 +83,8 @@ def check_combo(model: Model, bounds: SweepBounds, combo: dict[str, int], activi
     robot counts, the witness of the smallest violating count (replayed by the checker); then, if a
     lemma holds, what those counts expanded, and the same counts explored past violations
     (:mod:`fatline_verify.sweep.equivalent`). ``activity`` hears of each search level."""
-    from ..check.checker import CheckPlan, explore_robots, lemma_verdicts
+    from ..check.checker import CheckPlan, explore_robots
+    from ..check.verdicts import lemma_verdicts
 
     t0 = time.perf_counter()
     plan = CheckPlan.of(
