@@ -30,6 +30,7 @@ from ..model.numbers import Point, show_point
 from ..model.options import Motion, Scheduler
 from ..model.swarm import initial_problems, is_goal
 from ..rules import registry
+from ..rules.paper.algorithm import Decision
 from ..schedulers.round import decide_all
 from .search import Budget
 from .smt.cases import Arith
@@ -200,17 +201,28 @@ def _shown(model: Model, state: Sequence[Point]) -> str:
     return ", ".join(show_point(model.from_lattice(p)) for p in state)
 
 
+OFF_LATTICE = "a centre off the model's lattice"
+
+
+def _swarm(model: Model, positions: Positions) -> tuple[tuple[Point, ...], str, dict[int, Decision]] | None:
+    """A solution's swarm on the model's lattice, as shown in a reason, and every robot's decision
+    there (``None`` if a centre is off the lattice): what both replays start from."""
+    state = _state(model, positions)
+    if state is None:
+        return None
+    return state, _shown(model, state), decide_all(state, model)
+
+
 def replay_stuck(
     model: Model, spec: LiveSpec, positions: Positions
 ) -> tuple[Verdict, str, dict[str, Any] | None, tuple[str, ...]]:
     """A solution of an enabledness obligation as a swarm: VIOLATED only if no robot moves there, it
     is not a goal, and it meets the initial condition (a stuck configuration, replayed)."""
     config = _config(positions)
-    state = _state(model, positions)
-    if state is None:
-        return Verdict.INCONCLUSIVE, "a centre off the model's lattice", None, config
-    shown = _shown(model, state)
-    decisions = decide_all(state, model)
+    swarm = _swarm(model, positions)
+    if swarm is None:
+        return Verdict.INCONCLUSIVE, OFF_LATTICE, None, config
+    state, shown, decisions = swarm
     if decisions[0].moves:
         return Verdict.INCONCLUSIVE, f"encoding disagreement: in {shown} r moves (by {decisions[0].rule})", None, config
     movers = [i for i, d in decisions.items() if d.moves]
@@ -262,11 +274,10 @@ def replay_measure(
     from ..schedulers.round import play_round
 
     config = _config(positions)
-    state = _state(model, positions)
-    if state is None:
-        return Verdict.INCONCLUSIVE, "a centre off the model's lattice", None, config
-    shown = _shown(model, state)
-    decisions = decide_all(state, model)
+    swarm = _swarm(model, positions)
+    if swarm is None:
+        return Verdict.INCONCLUSIVE, OFF_LATTICE, None, config
+    state, shown, decisions = swarm
     d = decisions[0]
     r, want = state[0], model.to_lattice(positions["r'"])
     if not d.moves or (r[0] + d.destination[0], r[1] + d.destination[1]) != want:
