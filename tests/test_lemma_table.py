@@ -9,8 +9,10 @@ from pathlib import Path
 from fatline_verify.cli import prove as cli_prove
 from fatline_verify.cli.prove import LEMMA_CHOICES
 from fatline_verify.lemmas.properties import CHECKED, FLAG, SAFETY, SPECS, Judged, Lemma
+from fatline_verify.model.config import load_model
 from fatline_verify.prove import prover
 from fatline_verify.prove.prover import LEMMAS
+from fatline_verify.prove.tasks import tasks_for
 from fatline_verify.report.pages import PROVER_LEMMAS
 
 PACKAGE = Path(__file__).resolve().parent.parent / "fatline_verify"
@@ -113,11 +115,13 @@ def test_safety_flags_are_distinct_bits():
 
 
 def test_prover_lemmas_named_alike():
-    """The CLI's ``--lemma`` choices and the report's prover columns name the obligations' lemmas
-    (they cannot import them: that would load z3)."""
-    assert LEMMA_CHOICES == LEMMAS
-    # the report's columns: every lemma the prover has obligations for, liveness included, in its order
-    assert LEMMAS == PROVER_LEMMAS
+    """The CLI's ``--lemma`` choices and the report's prover columns name the lemmas the prover makes
+    obligations for (one z3-free tuple): every one of them has obligations for the paper's rules, and
+    no obligation is of a lemma outside it."""
+    assert LEMMA_CHOICES == LEMMAS == PROVER_LEMMAS
+    made = {task.lemma for task in tasks_for(load_model("paper"), LEMMAS)}
+    assert made == set(LEMMAS), made
+    assert {task.lemma for task in tasks_for(load_model("paper"), tuple(Lemma))} <= set(LEMMAS)
 
 
 def test_prover_defaults_named_alike():
