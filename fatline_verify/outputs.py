@@ -282,12 +282,28 @@ def read_regular(path: str | os.PathLike[str], *, limit: int = MAX_READ, head: b
                 raise NotReadable(f"not a regular file ({_file_kind(st.st_mode)})")
             if st.st_size > limit and not head:
                 raise NotReadable(f"too large ({st.st_size:,} bytes; at most {limit:,})")
-            data = fh.read(limit + 1)
+            data = _read_upto(fh, limit + 1, st.st_size)
         except OSError as exc:
             raise NotReadable(f"cannot be read ({os_error_text(None, exc)})") from None
     if len(data) > limit and not head:
         raise NotReadable(f"too large (more than {limit:,} bytes)")
     return data[:limit]
+
+
+def _read_upto(fh: Any, most: int, size_hint: int) -> bytes:
+    """At most ``most`` bytes of ``fh``, read in pieces no larger than the file (or 1 MiB past it):
+    one ``read(most)`` would allocate ``most`` bytes at once, and a limit as large as the machine's
+    memory is then refused by a kernel that does not overcommit."""
+    parts: list[bytes] = []
+    total = 0
+    step = max(size_hint + 1, 1 << 20)
+    while total < most:
+        piece = fh.read(min(step, most - total))
+        if not piece:
+            break
+        parts.append(piece)
+        total += len(piece)
+    return b"".join(parts) if len(parts) != 1 else parts[0]
 
 
 class _TooLong(ValueError):

@@ -282,3 +282,19 @@ def test_report_from_another_directory_with_a_copied_proofs_directory(capsys, tm
     assert code == 0, err
     ours = (base / "reports" / "paper" / "README.md").read_bytes()
     assert ours == (ROOT / "reports" / "paper" / "README.md").read_bytes()
+
+
+def test_a_large_read_limit_allocates_only_what_the_file_holds(tmp_path):
+    """A checkpoint level is read with the machine's memory as its limit; one ``read(limit + 1)`` asked
+    the allocator for that many bytes at once, which a kernel that does not overcommit refuses (a
+    MemoryError on resume). The limit is a bound, not a buffer size: a limit far beyond any memory reads
+    a small file whole, and a file one byte over a small limit is still refused."""
+    from fatline_verify.outputs import NotReadable, read_regular
+
+    path = tmp_path / "level.bin"
+    path.write_bytes(b"x" * 3000)
+    assert read_regular(path, limit=2**62) == b"x" * 3000
+    assert read_regular(path, limit=3000) == b"x" * 3000
+    with pytest.raises(NotReadable, match="too large"):
+        read_regular(path, limit=2999)
+    assert read_regular(path, limit=10, head=True) == b"x" * 10
