@@ -64,6 +64,10 @@ CONSOLIDATE = 1 << 23
 """Candidate successors a level gathers before folding them into its sorted set (bounds the peak;
 :meth:`.shard.Shard.expand`)."""
 
+CONSOLIDATE_MIN = 1 << 20
+"""And it folds them sooner, as soon as they outnumber the set and this (a fold's peak is per
+candidate: a small level's all at once measured as the peak of a whole search at n = 6)."""
+
 TRANSITION_BYTES = 256
 """A batch's peak bytes a transition (measured with tracemalloc: 228 at n = 5 on the paper's model,
 182-205 at n = 7 on the SPIN reading)."""
@@ -243,6 +247,7 @@ def held_bytes(arrays: list[np.ndarray]) -> int:
 
 __all__ = [
     "CONSOLIDATE",
+    "CONSOLIDATE_MIN",
     "FIRST_SAMPLE",
     "PRESUMED_MARGIN",
     "SAMPLE_MIN",

@@ -242,7 +242,7 @@ def explore_keys(
         saved.start(rec)
     visited = np.concatenate(rec.keys) if len(rec.keys) > 1 else np.asarray(rec.keys[0])
     frontier = np.asarray(rec.keys[-1])
-    frontier_ids = np.arange(len(visited) - len(frontier), len(visited), dtype=np.int64)
+    frontier_ids = _id_range(len(visited) - len(frontier), len(visited))
     limit, needed = Limit.NONE, 0
     if count == 1:  # no copies: the shard's visited set is sorted keys, the frontier its last level
         pool.map("seed", [(np.sort(visited) if len(rec.keys) > 1 else visited, frontier, frontier_ids)])
@@ -300,7 +300,7 @@ def explore_keys(
             frontier, new_src, new_act = new_keys[order], new_src[order], new_act[order]
             del order, rank, new_ids
         else:  # one shard: its new keys are sorted already
-            pool.map("assign", [(np.arange(total, total + len(new_keys), dtype=np.int64),)])
+            pool.map("assign", [(_id_range(total, total + len(new_keys)),)])
             frontier = new_keys
         rec.add_level(frontier, new_src, new_act)
         level += 1
@@ -321,6 +321,12 @@ def explore_keys(
     return ex
 
 
+def _id_range(start: int, stop: int) -> np.ndarray:
+    """The state ids ``start .. stop - 1`` of a frontier, in 32 bits where they fit (a shard's columns
+    are int32 then too)."""
+    return np.arange(start, stop, dtype=np.int32 if stop < 2**31 - 1 else np.int64)
+
+
 def _tick(progress: ProgressTick, level: int, states: int, done: int, frontier: int) -> None:
     progress(level, done, frontier, states)
 
@@ -332,7 +338,7 @@ def _held(pool: ShardPool, rec: _Records, frontier: np.ndarray) -> tuple[int, in
     arrays = [frontier] + [a for name in _RECORD_COLUMNS for a in getattr(rec, name)]
     remote = 0
     if isinstance(pool, LocalShards):
-        arrays += [a for s in pool.shards for a in (s.visited, s.frontier, s.frontier_ids)]
+        arrays += [a for s in pool.shards for a in (s.base, s.visited, s.frontier, s.frontier_ids)]
     else:
         remote = sum(pool.map("visited_bytes", [()] * pool.count))
     return guard.held_bytes(arrays) + remote, sum(len(k) for k in rec.keys)

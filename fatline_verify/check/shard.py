@@ -19,11 +19,12 @@ import numpy as np
 
 from ..lemmas.registry import CORE_FLAGS, FLAG_BITS, extra_flags, registered
 from ..model.config import Model
+from ..resources import return_freed_memory
 from ..schedulers.base import Engine, TransitionSystem, expand_keys
 from ..schedulers.systems import system_for
 from . import keys as keyset
 from .engines import engine_for
-from .guard import CONSOLIDATE, Watch
+from .guard import CONSOLIDATE, CONSOLIDATE_MIN, Watch
 
 _MIX = np.uint64(0x9E3779B97F4A7C15)
 
@@ -146,26 +147,42 @@ class Shard:
         count: int = 1,
         after_violation: str = "stop",
     ) -> None:
+        return_freed_memory()  # in this process, whichever process the shard lives in
         self.system = system_for(system) if isinstance(system, Model) else system
         self.engine = engine_for(self.system, engine) if isinstance(engine, str) else engine
         self.codec = self.system.codec(n, bound)
         self.index, self.count = index, count
         self.after_violation = after_violation
+        self.base = np.zeros(0, dtype=self.codec.dtype)
+        """The keys the shard was seeded with, sorted, held as given (in process, the store's first
+        level itself: no copy of the largest level)."""
         self.visited = np.zeros(0, dtype=self.codec.dtype)
+        """The keys found since, sorted: together with :attr:`base` (disjoint) the visited set."""
         self.frontier = np.zeros(0, dtype=self.codec.dtype)
         self.frontier_ids = np.zeros(0, dtype=np.int64)
         self.lemmas = registered()
         """Registered step lemmas: judged on every transition, by one numpy pass over its positions."""
 
     def seed(self, visited: np.ndarray, frontier: np.ndarray | None, frontier_ids: np.ndarray) -> int:
-        """Start (or resume) with these owned keys: ``visited`` sorted, the frontier a sorted subset
-        (``None``: all of them, one array, not a copy sent beside it)."""
-        self.visited, self.frontier, self.frontier_ids = (
-            visited,
-            visited if frontier is None else frontier,
-            frontier_ids,
-        )
-        return len(self.visited)
+        """Start (or resume) with these owned keys: ``visited`` sorted (kept as :attr:`base`, not copied),
+        the frontier a sorted subset (``None``: all of them, one array, not a copy sent beside it)."""
+        self.base, self.visited = visited, np.zeros(0, dtype=self.codec.dtype)
+        self.frontier = visited if frontier is None else frontier
+        self.frontier_ids = frontier_ids
+        return self.known()
+
+    def known(self) -> int:
+        """The visited set's size."""
+        return len(self.base) + len(self.visited)
+
+    def _seen(self, keys: np.ndarray) -> np.ndarray:
+        """Which of ``keys`` (sorted) are in the visited set."""
+        seen = np.zeros(len(keys), dtype=bool)
+        for run in (self.base, self.visited):
+            if len(run) and len(keys):
+                pos = np.minimum(keyset.searchsorted(run, keys), len(run) - 1)
+                seen |= run[pos] == keys
+        return seen
 
     def _batches(
         self, keys: np.ndarray, ids: np.ndarray, batch: int, progress: Callable[[int, int], None] | None = None
@@ -214,20 +231,25 @@ class Shard:
         watch = None
         if room is not None:
             size = self.codec.dtype.itemsize
-            watch = Watch(room, len(self.frontier), len(self.visited), size, self.count, spill)
-        ids, enabled, goal, summaries = [], [], [], []
-        ck, cs, ca = np.zeros(0, dtype=self.codec.dtype), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int32)
+            watch = Watch(room, len(self.frontier), self.known(), size, self.count, spill)
+        # per state, filled batch by batch (the expanded states are the frontier's, in its order)
+        enabled = np.empty(len(self.frontier), dtype=enabled_dtype(self.codec.n))
+        goal = np.empty(len(self.frontier), dtype=bool)
+        summaries = []
+        ck, cs, ca = np.zeros(0, dtype=self.codec.dtype), np.zeros(0, dtype=np.int32), np.zeros(0, dtype=np.int32)
         parts: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
         pending = done = 0
         for tr in self._batches(self.frontier, self.frontier_ids, batch, progress):
+            enabled[done : done + len(tr.ids)] = tr.enabled
+            goal[done : done + len(tr.ids)] = tr.goal
             done += len(tr.ids)
-            ids.append(tr.ids.astype(np.int32) if len(tr.ids) and tr.ids[-1] < 2**31 - 1 else tr.ids)
-            enabled.append(tr.enabled)
-            goal.append(tr.goal)
             summaries.append(summarise(tr.src, tr.action, tr.flags, tr.fits, tr.exact, self.after_violation))
             follow = followed(tr.fits, tr.flags, self.after_violation)
             # A key's first occurrence is its least (source, action): batches ascend, so do their firsts.
             bk, first = keyset.unique_first(tr.key)
+            unseen = self._unseen(bk)
+            if unseen is not None:
+                bk, first = bk[unseen], first[unseen]
             bs = tr.src[follow][first]
             parts.append(
                 (bk, bs.astype(np.int32) if len(bs) and bs.max() < 2**31 - 1 else bs, tr.action[follow][first])
@@ -237,7 +259,8 @@ class Shard:
             del tr
             if watch is not None and not watch.fits(done, len(ck) + pending, transitions=transitions):
                 return _stopped(watch, self.codec.n)
-            if pending > CONSOLIDATE:  # bound the level's candidates: fold them into one sorted set
+            if pending > min(CONSOLIDATE, max(CONSOLIDATE_MIN, len(ck))):  # fold them into one sorted set:
+                # geometric steps (each fold at most doubles the set), at most CONSOLIDATE pending
                 ck, cs, ca = _first_of(ck, cs, ca, parts, self.codec.dtype)
                 parts, pending = [], 0
         ck, cs, ca = _first_of(ck, cs, ca, parts, self.codec.dtype)
@@ -248,13 +271,19 @@ class Shard:
         routed = [(ck[owner == o], cs[owner == o], ca[owner == o]) for o in range(self.count)]
         if self.count == 1:
             routed = [(ck, cs, ca)]
-        return Level(
-            _concat(ids, np.int64),
-            _concat(enabled, enabled_dtype(self.codec.n)),
-            _concat(goal, bool),
-            fold_summaries(summaries),
-            routed,
-        )
+        return Level(np.asarray(self.frontier_ids), enabled, goal, fold_summaries(summaries), routed)
+
+    def _unseen(self, keys: np.ndarray) -> np.ndarray | None:
+        """Which of ``keys`` (sorted, distinct) are not in this shard's visited set, as a mask (``None``:
+        all are). A key another shard owns is kept (its owner decides). Dropping the seen ones while
+        gathering changes nothing :meth:`merge` returns (it drops them too; the visited set does not
+        change during a level) but bounds the candidates a level holds by the states it adds."""
+        if not self.known() or not len(keys):
+            return None
+        unseen = ~self._seen(keys)
+        if self.count > 1:
+            unseen |= owners(keys, self.count) != self.index
+        return None if unseen.all() else unseen
 
     def transitions(self, keys: np.ndarray, ids: np.ndarray, batch: int = 50_000) -> Transitions:
         """Every transition of the states ``keys`` (ids ``ids``, ascending), recomputed (the search keeps
@@ -291,9 +320,8 @@ class Shard:
             first = np.ones(len(ck), dtype=bool)
             first[1:] = ck[1:] != ck[:-1]
             ck, cs, ca = ck[first], cs[first], ca[first]
-        if len(self.visited) and len(ck):
-            pos = np.minimum(keyset.searchsorted(self.visited, ck), len(self.visited) - 1)
-            new = self.visited[pos] != ck
+        if self.known() and len(ck):
+            new = ~self._seen(ck)
             ck, cs, ca = ck[new], cs[new], ca[new]
         self.visited = _merged(self.visited, ck)
         self.frontier = ck
@@ -304,9 +332,10 @@ class Shard:
         self.frontier_ids = ids
 
     def visited_bytes(self) -> int:
-        """Bytes of the visited set, the frontier (unless it is the visited set itself) and its ids."""
-        front = 0 if self.frontier is self.visited else self.frontier.nbytes
-        return int(self.visited.nbytes + front + self.frontier_ids.nbytes)
+        """Bytes of the visited set, the frontier (unless it is one of the visited set's arrays) and its
+        ids."""
+        front = 0 if self.frontier is self.visited or self.frontier is self.base else self.frontier.nbytes
+        return int(self.base.nbytes + self.visited.nbytes + front + self.frontier_ids.nbytes)
 
 
 COLUMNS = ("enabled", "goal", "summary")
@@ -345,7 +374,8 @@ def _first_of(
     if len(parts) == 1 and not len(ck):
         return parts[0]  # type: ignore[return-value]
     keys = np.concatenate([ck, *[p[0] for p in parts]])
-    src = np.concatenate([cs.astype(np.int64, copy=False), *[p[1].astype(np.int64, copy=False) for p in parts]])
+    narrow = cs.dtype == np.int32 and all(p[1].dtype == np.int32 for p in parts)
+    src = np.concatenate([cs, *[p[1] for p in parts]]).astype(np.int32 if narrow else np.int64, copy=False)
     act = np.concatenate([ca, *[p[2] for p in parts]])
     keys, first = keyset.unique_first(keys)  # stable: the first occurrence of each key
     src = src[first]
@@ -356,6 +386,8 @@ def _merged(visited: np.ndarray, new: np.ndarray) -> np.ndarray:
     """Two sorted arrays of distinct keys as one, without sorting again (peak: the two and the result)."""
     if not len(new):
         return visited
+    if not len(visited):
+        return new
     at = keyset.searchsorted(visited, new) + np.arange(len(new))
     out = np.empty(len(visited) + len(new), dtype=visited.dtype)
     rest = np.ones(len(out), dtype=bool)

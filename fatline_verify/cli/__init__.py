@@ -45,6 +45,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_BAD
     except SystemExit as exc:  # --help and --version
         return int(exc.code or 0)
+    from ..resources import return_freed_memory
+
+    return_freed_memory()  # a search's freed buffers leave the process (fatline_verify/resources.py)
     try:
         return int(args.handler(args))
     except FatlineError as exc:
