@@ -39,11 +39,11 @@ def test_a_level_gathers_only_unvisited_successors_and_the_seed_is_not_copied(se
     ((keys, src, action),) = level.routed
     assert np.array_equal(keys, unvisited)  # exactly the unvisited ones, sorted, each once
     # each with its least (source, action) among the followed transitions reaching it
-    pairs = sorted(zip(every.src[follow].tolist(), every.action[follow].tolist(), every.key.tolist()))
+    pairs = sorted(zip(every.src[follow].tolist(), every.action[follow].tolist(), every.key.tolist(), strict=True))
     least = {}
     for s, a, k in pairs:
         least.setdefault(k, (s, a))
-    assert [least[k] for k in keys.tolist()] == list(zip(src.tolist(), action.tolist()))
+    assert [least[k] for k in keys.tolist()] == list(zip(src.tolist(), action.tolist(), strict=True))
     assert np.array_equal(level.ids, np.arange(len(start)))
     new, _, _ = shard.merge(level.routed)
     assert shard.base is start  # held as given, never merged into
