@@ -62,18 +62,24 @@ class LocalShards:
     def map(self, method: str, args: list[tuple[Any, ...]]) -> list[Any]:
         return [getattr(s, method)(*a) for s, a in zip(self.shards, args, strict=True)]
 
+    def call(self, index: int, method: str, args: tuple[Any, ...]) -> Any:
+        return getattr(self.shards[index], method)(*args)
+
     def close(self) -> None:
         pass
 
 
 class ShardPool(Protocol):
-    """What :func:`explore_keys` needs of its shards: ``count``, ``map(method, per-shard args)`` and
-    ``close()``. :class:`LocalShards` and :class:`.workers.DaskShards` implement it."""
+    """What :func:`explore_keys` needs of its shards: ``count``, ``map(method, per-shard args)`` (every
+    shard at once), ``call(index, method, args)`` (one shard, waited for) and ``close()``.
+    :class:`LocalShards` and :class:`.workers.DaskShards` implement it."""
 
     @property
     def count(self) -> int: ...
 
     def map(self, method: str, args: list[tuple[Any, ...]]) -> list[Any]: ...
+
+    def call(self, index: int, method: str, args: tuple[Any, ...]) -> Any: ...
 
     def close(self) -> None: ...
 
@@ -250,14 +256,11 @@ def explore_keys(
         owner_all = owners(visited, count)
         initial_level = len(frontier) == len(visited)  # the initial level is the whole visited set, sorted
         owner_front = owner_all if initial_level else owners(frontier, count)
-        seeds = []
-        for o in range(count):
+        for o in range(count):  # one shard at a time: one shard's copy of its keys in flight, not all
             mine = visited[owner_all == o]
             front = None if initial_level else frontier[owner_front == o]  # None: the shard's visited set
-            seeds.append((mine if initial_level else np.sort(mine), front, frontier_ids[owner_front == o]))
+            pool.call(o, "seed", (mine if initial_level else np.sort(mine), front, frontier_ids[owner_front == o]))
             del mine, front
-        pool.map("seed", seeds)
-        del seeds
         del owner_all, owner_front
     del visited
     total = sum(len(k) for k in rec.keys)

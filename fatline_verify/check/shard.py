@@ -30,9 +30,11 @@ _MIX = np.uint64(0x9E3779B97F4A7C15)
 
 
 def owners(keys: np.ndarray, count: int) -> np.ndarray:
-    """The shard that owns each key (a multiplicative hash of its bytes, so neighbouring keys spread)."""
+    """The shard that owns each key (a multiplicative hash of its bytes, so neighbouring keys spread), in
+    the smallest integer type that holds ``count - 1``."""
+    small = np.uint8 if count <= 256 else np.uint16 if count <= 65536 else np.int64
     if count == 1:
-        return np.zeros(len(keys), dtype=np.int64)
+        return np.zeros(len(keys), dtype=small)
     if keys.dtype == np.int64:
         words = keys.view(np.uint64)
     else:  # fixed-width byte keys: fold their 64-bit words
@@ -40,7 +42,7 @@ def owners(keys: np.ndarray, count: int) -> np.ndarray:
         words = np.bitwise_xor.reduce(raw, axis=1)
     with np.errstate(over="ignore"):
         mixed = words * _MIX
-    return ((mixed >> np.uint64(33)) % np.uint64(count)).astype(np.int64)
+    return ((mixed >> np.uint64(33)) % np.uint64(count)).astype(small)
 
 
 SUMMARY_COUNTS = ("transitions", "escaped", "off_lattice", "violating_only")

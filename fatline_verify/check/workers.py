@@ -95,6 +95,10 @@ class DaskShards:
         futures = [getattr(actor, method)(*a) for actor, a in zip(self.actors, args, strict=True)]
         return [f.result() for f in futures]
 
+    def call(self, index: int, method: str, args: tuple[Any, ...]) -> Any:
+        """One shard's ``method``, waited for."""
+        return getattr(self.actors[index], method)(*args).result()
+
     def close(self) -> None:
         self.actors = []
 
