@@ -151,6 +151,25 @@ def test_any_number_of_shards_gives_the_same_search(readings):
         _same(one, many)
 
 
+def test_shards_elsewhere_name_the_level_they_expand_before_it_returns():
+    """Shards that report nothing while they run (Dask workers) still have the progress line name their
+    level as it starts (nothing done of its frontier), then the level done, as one process does."""
+    model = make_model()
+    system = system_for(model)
+    codec = system.codec(3, (8, 8))
+    from fatline_verify.check.initial import initial_array
+
+    init = np.sort(codec.encode(system.initial(initial_array(3, (6, 6), model))))
+    calls: list[tuple[int, int, int, int]] = []
+    shards = [Shard(system, 3, (8, 8), "fast", i, 2) for i in range(2)]
+    ex = explore_keys(system, 3, init, (8, 8), "fast", pool=LocalShards(shards), progress=lambda *a: calls.append(a))
+    starts = [c for c in calls if c[1] == 0 and c[2]]  # (an empty last level reports 0 of 0 when done)
+    sizes = [int(s) for s in ex.level_sizes]
+    assert [(level, frontier) for level, _, frontier, _ in starts] == [(i, sizes[i]) for i in range(len(starts))]
+    assert len(starts) == sum(1 for s in sizes if s)  # every level with a frontier, once, before it ran
+    assert starts[0] == (0, 0, len(init), len(init))
+
+
 @pytest.mark.parametrize("motion", ["rigid", "non-rigid"])
 def test_shards_agree_on_async_byte_keys(motion):
     """Four async robots need two-word keys; a shard with nothing to route must not break the level."""

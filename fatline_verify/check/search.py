@@ -280,7 +280,9 @@ def explore_keys(
                 break
         if progress and isinstance(pool, LocalShards) and count == 1:
             lv_parts = [pool.shards[0].expand(batch, partial(_tick, progress, level, total), room, spill)]
-        else:
+        else:  # the shards run elsewhere: the line names the level they expand (done when they return)
+            if progress:
+                progress(level, 0, len(frontier), total)
             lv_parts = pool.map("expand", [(batch, None, room) + ((spill,) if spill else ())] * count)
         if any(p.needed for p in lv_parts):  # a shard's real figures passed its share of the budget
             level_need = count * max(p.needed for p in lv_parts)
