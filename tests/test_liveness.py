@@ -44,6 +44,14 @@ class Graph:
         ok = nodes[self.src] & nodes[self.dst] if len(self.src) else np.zeros(0, dtype=bool)
         return self.src[ok], self.dst[ok], self.action[ok]
 
+    def memo(self, name: str, make: Any) -> Any:
+        if name not in self._cache:
+            self._cache[name] = make()
+        return self._cache[name]
+
+    def has_index(self) -> bool:
+        return False
+
     def drop_index(self) -> None:
         pass
 
@@ -65,7 +73,7 @@ def graph_perms(monkeypatch):
 
 @st.composite
 def graphs(draw: Any) -> Graph:
-    n = draw(st.integers(1, 3))
+    n = draw(st.integers(1, 4))
     size = draw(st.integers(1, 9))
     orders = list(all_orders(range(n)))
     enabled = [draw(st.integers(0, (1 << n) - 1)) for _ in range(size)]

@@ -177,6 +177,10 @@ class Exploration:
             got = self._cache["index"] = (keys[order], order)
         return got  # type: ignore[no-any-return]
 
+    def has_index(self) -> bool:
+        """Whether the key index of :meth:`ids_of` is built."""
+        return "index" in self._cache
+
     def drop_index(self) -> None:
         """Free the key index :meth:`ids_of` builds (about 24 bytes a state)."""
         self._cache.pop("index", None)
@@ -198,6 +202,13 @@ class Exploration:
             eng = engine_for(self.system, self.engine)
             self.expander = Shard(self.system, self.n, self.window, eng, 0, 1, self.after_violation)
         return self.expander
+
+    def memo(self, name: str, make: Any) -> Any:
+        """``make()``, computed once per exploration and kept under ``name`` (derived data: the
+        exploration itself never changes)."""
+        if name not in self._cache:
+            self._cache[name] = make()
+        return self._cache[name]
 
     def expander_engine(self) -> Any:
         """The engine that recomputes transitions (:meth:`transitions`), for a batch of array states."""

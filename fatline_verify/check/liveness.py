@@ -10,6 +10,14 @@ exploring it from one labelling per strongly connected component (SCC) of the st
 enough. A product SCC contains a fair cycle iff every robot is disabled in one of its nodes or
 activated on one of its edges (weak fairness needs no refinement of the SCC); the cycle built then
 visits, for each robot, such a node or edge, and returns.
+
+How it is computed (the graphs reach a hundred million edges): the followed transitions are recomputed
+once per exploration and only those on a cycle of the state graph are kept (:func:`_cyclic`,
+:mod:`.cycles`: numba SCCs). The product from one labelling of a state SCC is a single SCC (each of its
+edges lies on a cycle: a state cycle through it, repeated until the labelling returns), whose
+labellings at a state are those of a spanning tree composed with one group of relabellings; so whether
+it is fair is decided without building it (:func:`.cycles.fair_components`), and only a fair one is
+built and walked: by networkx as before when small (:data:`EXACT_PRODUCT`), else on arrays.
 """
 
 from __future__ import annotations
@@ -116,14 +124,16 @@ def _cyclic(ex: Exploration, nodes: np.ndarray) -> tuple[np.ndarray, np.ndarray,
     """The followed edges between states with ``nodes[id]`` true that may lie on a cycle: the edges on a
     cycle among all expanded states (recomputed once per exploration and kept), restricted to ``nodes``.
     A cycle among ``nodes`` is a cycle among the expanded states, and unexpanded states have no edges."""
-    got = ex._cache.get("cyclic_edges")
-    if got is None:
-        had_index = "index" in ex._cache
+
+    def make() -> tuple[np.ndarray, ...]:
+        had_index = ex.has_index()
         src, dst, mask = ex.followed_edges(ex.expanded)  # recomputed: the search keeps no transitions
         if not had_index:
-            ex.drop_index()
+            ex.drop_index()  # about 24 bytes a state, not needed again
         keep, _ = cycles.cyclic_edges(src, dst, ex.n_states)
-        got = ex._cache["cyclic_edges"] = (src[keep], dst[keep], mask[keep])
+        return src[keep], dst[keep], mask[keep]
+
+    got = ex.memo("cyclic_edges", make)
     src, dst, mask = got
     ok = nodes[src] & nodes[dst]
     return src[ok], dst[ok], mask[ok]
