@@ -17,6 +17,7 @@ from hypothesis import strategies as st
 from fatline_verify.check import cycles, liveness
 from fatline_verify.check.checker import CheckPlan, explore_robots
 from fatline_verify.check.liveness import Lasso
+from fatline_verify.check.witness import lasso_run
 from fatline_verify.rules.paper.algorithm import Decision, Rule
 from tests import liveness_reference as reference
 from tests.conftest import make_model
@@ -164,17 +165,29 @@ def slide(scheduler: str) -> Any:
     return replace(make_model(scheduler=scheduler), algorithm=rule)
 
 
-@pytest.mark.parametrize("scheduler", ["fsync", "ssync", "centralized", "async"])
-def test_explored_models_give_the_reference_lassos_and_permutations(scheduler):
+@pytest.mark.parametrize(
+    ("scheduler", "n"),
+    [
+        *((s, n) for s in ("fsync", "ssync", "centralized") for n in (2, 3)),
+        ("async", 2),
+        pytest.param("async", 3, marks=pytest.mark.slow),  # 89 fair SCCs, each walked by both searches
+    ],
+)
+def test_explored_models_give_the_reference_lassos_and_permutations(scheduler, n, monkeypatch):
     model = slide(scheduler)
-    for n in (2, 3):
-        ex = explore_robots(CheckPlan.of(model, robots=(n, n), window=(7, 7), max_states=200_000, engine="fast"), n)
-        src, _, action = ex.followed_edges(ex.expanded)
-        got = liveness.permutations(ex, src, action)
-        assert [tuple(p) for p in got.tolist()] == [
-            liveness._permutation(ex, int(s), int(k)) for s, k in zip(src, action, strict=True)
-        ]
-        for nodes in (ex.expanded & ~ex.goal, ex.expanded):
-            want = reference.fair_cycles(ex, nodes)
-            assert liveness.fair_cycles(ex, nodes) == want
-        assert want or scheduler == "async"
+    ex = explore_robots(CheckPlan.of(model, robots=(n, n), window=(7, 7), max_states=200_000, engine="fast"), n)
+    src, _, action = ex.followed_edges(ex.expanded)
+    got = liveness.permutations(ex, src, action)
+    assert [tuple(p) for p in got.tolist()] == [
+        liveness._permutation(ex, int(s), int(k)) for s, k in zip(src, action, strict=True)
+    ]
+    for nodes in (ex.expanded & ~ex.goal, ex.expanded):
+        want = reference.fair_cycles(ex, nodes)
+        assert liveness.fair_cycles(ex, nodes) == want
+    assert want
+    # The array walk (a large product's): the same starts and lengths, and every lasso replays.
+    monkeypatch.setattr(liveness, "EXACT_PRODUCT", 0)
+    built = liveness.fair_cycles(ex, ex.expanded)
+    assert sorted((a.start, len(a.cycle)) for a in built) == sorted((a.start, len(a.cycle)) for a in want)
+    for lasso in built:
+        lasso_run(ex, lasso.start, lasso.cycle)
