@@ -15,6 +15,7 @@ import numpy as np
 from ..lemmas.registry import FLAG_BITS
 from ..model.config import Model
 from ..schedulers.base import Codec, TransitionSystem
+from . import keys as keyset
 from .engines import engine_for
 from .shard import SUMMARY_COUNTS, Shard, followed
 
@@ -161,17 +162,39 @@ class Exploration:
         return state_id
 
     # --- transitions, recomputed ------------------------------------------------------------------
+    def _index(self) -> tuple[np.ndarray, np.ndarray]:
+        """Every key in ascending order and its state id (built on first use; :meth:`drop_index` frees it)."""
+        got = self._cache.get("index")
+        if got is None:
+            keys = np.asarray(self.keys)
+            if keys.dtype.kind == "V":  # two sorts of a word each: far less memory than a radix sort
+                w = keyset.words(keys)
+                order = np.lexsort(tuple(w[:, i] for i in range(w.shape[1] - 1, -1, -1)))
+                del w
+            else:
+                order = np.argsort(keys, kind="stable")
+            order = order.astype(np.int32 if len(keys) < 2**31 else np.int64)
+            got = self._cache["index"] = (keys[order], order)
+        return got  # type: ignore[no-any-return]
+
+    def has_index(self) -> bool:
+        """Whether the key index of :meth:`ids_of` is built."""
+        return "index" in self._cache
+
+    def drop_index(self) -> None:
+        """Free the key index :meth:`ids_of` builds (about 24 bytes a state)."""
+        self._cache.pop("index", None)
+
     def ids_of(self, keys: np.ndarray) -> np.ndarray:
-        """The ids of ``keys`` (-1 for a key not explored): looked up level by level (each is sorted)."""
+        """The ids of ``keys`` (-1 for a key not explored): looked up in one sorted index of every key
+        (each level's keys are sorted, but not the levels together)."""
         out = np.full(len(keys), -1, dtype=np.int64)
-        start = 0
-        for size in self.level_sizes.tolist():
-            level = self.keys[start : start + size]
-            if size and len(keys):
-                pos = np.minimum(np.searchsorted(level, keys), size - 1)
-                hit = level[pos] == keys
-                out[hit] = start + pos[hit]
-            start += size
+        if not len(keys) or not self.n_states:
+            return out
+        ordered, ids = self._index()
+        pos = np.minimum(keyset.searchsorted(ordered, keys), len(ordered) - 1)
+        hit = ordered[pos] == keys
+        out[hit] = ids[pos[hit]]
         return out
 
     def _expander(self) -> Shard:
@@ -179,6 +202,17 @@ class Exploration:
             eng = engine_for(self.system, self.engine)
             self.expander = Shard(self.system, self.n, self.window, eng, 0, 1, self.after_violation)
         return self.expander
+
+    def memo(self, name: str, make: Any) -> Any:
+        """``make()``, computed once per exploration and kept under ``name`` (derived data: the
+        exploration itself never changes)."""
+        if name not in self._cache:
+            self._cache[name] = make()
+        return self._cache[name]
+
+    def expander_engine(self) -> Any:
+        """The engine that recomputes transitions (:meth:`transitions`), for a batch of array states."""
+        return self._expander().engine
 
     def transitions(self, ids: np.ndarray) -> tuple[np.ndarray, ...]:
         """Every transition of the expanded states ``ids`` (ascending), recomputed: ``(src, dst, action,
@@ -194,16 +228,27 @@ class Exploration:
 
     def followed_edges(self, nodes: np.ndarray, batch: int = 200_000) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``(src, dst, action)`` of the followed transitions between states with ``nodes[id]`` true (only
-        expanded states have transitions), recomputed ``batch`` sources at a time."""
+        expanded states have transitions), recomputed ``batch`` sources at a time (at least an eighth of
+        the states: their successors are then looked up in one walk through the key index)."""
         ids = np.flatnonzero(nodes[: self.n_expanded])
-        parts: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
+        batch = max(batch, self.n_states // 8 + 1)
+        out: list[np.ndarray] = []
+        filled = 0
         for start in range(0, len(ids), batch):
             src, dst, action, _, _, _ = self.transitions(ids[start : start + batch])
             ok = (dst >= 0) & nodes[np.maximum(dst, 0)]
-            parts.append((src[ok], dst[ok], action[ok]))
-        if not parts:
+            got = (src[ok], dst[ok], action[ok])
+            if not out or filled + len(got[0]) > len(out[0]):  # at first the transitions' count: no copies
+                size = max(self.n_transitions, 2 * (filled + len(got[0])))
+                out = [np.concatenate([o[:filled], np.empty(size - filled, o.dtype)]) for o in out] or [
+                    np.empty(size, x.dtype) for x in got
+                ]
+            for o, x in zip(out, got, strict=True):
+                o[filled : filled + len(x)] = x
+            filled += len(got[0])
+        if not out:
             return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int32)
-        return tuple(np.concatenate([p[k] for p in parts]) for k in range(3))  # type: ignore[return-value]
+        return out[0][:filled], out[1][:filled], out[2][:filled]
 
     def _edges(self) -> tuple[np.ndarray, ...]:
         got = self._cache.get("edges")
