@@ -350,7 +350,7 @@ def kernels_cached(engine: str, family: str = "rounds") -> bool:
     """Whether the numba kernels a search with ``engine`` over a system of ``family`` runs are compiled
     in this process or cached on disk for this source (so no compile comes first); ``True`` where
     numba cannot tell."""
-    from . import compiled, compiled_async, hashtable, initial, keys
+    from . import compiled, compiled_async, cycles, hashtable, initial, keys
 
     def own(module: Any) -> list[Any]:
         """The module's own kernels (one imported from another is compiled into its callers there)."""
@@ -360,7 +360,7 @@ def kernels_cached(engine: str, family: str = "rounds") -> bool:
             if getattr(getattr(v, "py_func", None), "__module__", None) == module.__name__
         ]
 
-    kernels = own(initial)
+    kernels = own(initial) + own(cycles)  # cycles: the fair-cycle search, after the exploration
     if engine == "compiled":
         kernels += own(hashtable) + own(compiled) + (own(compiled_async) if family == "async" else [])
     if family == "async":  # keys past 63 bits (n >= 4 in 9x9), whatever the engine
