@@ -123,18 +123,14 @@ class Exploration:
     @property
     def depth(self) -> np.ndarray:
         """Every state's depth (its level), computed from the level sizes."""
-        got = self._cache.get("depth")
-        if got is None:
-            got = self._cache["depth"] = np.repeat(np.arange(len(self.level_sizes), dtype=np.int32), self.level_sizes)
-        return got  # type: ignore[no-any-return]
+        return self.memo(  # type: ignore[no-any-return]
+            "depth", lambda: np.repeat(np.arange(len(self.level_sizes), dtype=np.int32), self.level_sizes)
+        )
 
     @property
     def expanded(self) -> np.ndarray:
         """Whether each state was expanded (the ids below :attr:`n_expanded`)."""
-        got = self._cache.get("expanded")
-        if got is None:
-            got = self._cache["expanded"] = np.arange(self.n_states) < self.n_expanded
-        return got  # type: ignore[no-any-return]
+        return self.memo("expanded", lambda: np.arange(self.n_states) < self.n_expanded)  # type: ignore[no-any-return]
 
     @property
     def states(self) -> np.ndarray:
@@ -164,8 +160,8 @@ class Exploration:
     # --- transitions, recomputed ------------------------------------------------------------------
     def _index(self) -> tuple[np.ndarray, np.ndarray]:
         """Every key in ascending order and its state id (built on first use; :meth:`drop_index` frees it)."""
-        got = self._cache.get("index")
-        if got is None:
+
+        def make() -> tuple[np.ndarray, np.ndarray]:
             keys = np.asarray(self.keys)
             if keys.dtype.kind == "V":  # two sorts of a word each: far less memory than a radix sort
                 w = keyset.words(keys)
@@ -174,8 +170,9 @@ class Exploration:
             else:
                 order = np.argsort(keys, kind="stable")
             order = order.astype(np.int32 if len(keys) < 2**31 else np.int64)
-            got = self._cache["index"] = (keys[order], order)
-        return got  # type: ignore[no-any-return]
+            return keys[order], order
+
+        return self.memo("index", make)  # type: ignore[no-any-return]
 
     def has_index(self) -> bool:
         """Whether the key index of :meth:`ids_of` is built."""
@@ -251,10 +248,7 @@ class Exploration:
         return out[0][:filled], out[1][:filled], out[2][:filled]
 
     def _edges(self) -> tuple[np.ndarray, ...]:
-        got = self._cache.get("edges")
-        if got is None:
-            got = self._cache["edges"] = self.transitions(np.arange(self.n_expanded, dtype=np.int64))
-        return got  # type: ignore[no-any-return]
+        return self.memo("edges", lambda: self.transitions(np.arange(self.n_expanded, dtype=np.int64)))  # type: ignore[no-any-return]
 
     @property
     def edge_src(self) -> np.ndarray:
