@@ -277,9 +277,10 @@ class Shard:
 
     def _unseen(self, keys: np.ndarray) -> np.ndarray | None:
         """Which of ``keys`` (sorted, distinct) are not in this shard's visited set, as a mask (``None``:
-        all are). A key another shard owns is kept (its owner decides). Dropping the seen ones while
-        gathering changes nothing :meth:`merge` returns (it drops them too; the visited set does not
-        change during a level) but bounds the candidates a level holds by the states it adds."""
+        all are). A key another shard owns is kept (its owner decides, in :meth:`merge`). The visited
+        set does not change during a level, so dropping the seen ones while gathering is what the merge
+        would do (with one shard it does not look again) and bounds the level's candidates by the states
+        it adds."""
         if not self.known() or not len(keys):
             return None
         unseen = ~self._seen(keys)
@@ -322,7 +323,7 @@ class Shard:
             first = np.ones(len(ck), dtype=bool)
             first[1:] = ck[1:] != ck[:-1]
             ck, cs, ca = ck[first], cs[first], ca[first]
-        if self.known() and len(ck):
+        if self.count > 1 and self.known() and len(ck):  # one shard: gathered unseen (:meth:`_unseen`)
             new = ~self._seen(ck)
             ck, cs, ca = ck[new], cs[new], ca[new]
         self.visited = _merged(self.visited, ck)
