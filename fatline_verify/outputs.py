@@ -303,7 +303,7 @@ def _read_upto(fh: Any, most: int, size_hint: int) -> bytes:
             break
         parts.append(piece)
         total += len(piece)
-    return b"".join(parts) if len(parts) != 1 else parts[0]
+    return b"".join(parts)  # one piece: returned as it is, not copied
 
 
 class _TooLong(ValueError):
