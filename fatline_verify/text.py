@@ -410,6 +410,12 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
         ],
         rows,
     )
+    lines += [
+        f"n={s.robots}: a decision off the model's lattice: searched by the {s.engine} engine (the {s.asked} engine "
+        "packs lattice moves only; off-lattice successors are judged on their step and counted, not explored)"
+        for s in result.stats
+        if s.asked
+    ]
     lines.append("")
     rows = []
     for lemma in dict.fromkeys(x.lemma for x in result.results):  # the paper's, then registered ones
@@ -426,12 +432,17 @@ def check_lines(result: Any, trace_paths: dict[tuple[str, int], str]) -> list[st
         )
     else:
         lines.append(f"States reached through violating {word}s are explored further (--after-violation continue).")
-    off = (
-        f" off-lattice = successors (counted in escaped) with a robot between points of the {system.scale}-times "
-        "finer lattice (a move decided on a halfway view), not explored;"
-        if fine
-        else ""
-    )
+    off = ""
+    if system.scale > 1:
+        off = (
+            f" off-lattice = successors (counted in escaped) with a robot between points of the {system.scale}-times "
+            "finer lattice (a move decided on a halfway view), not explored;"
+        )
+    elif fine:
+        off = (
+            " off-lattice = successors with a robot off the model's lattice (a destination between its points), "
+            "judged on their step and counted in escaped, not explored;"
+        )
     outside, scope = ("window", "window") if result.bound is None else ("exploration bound", "window and bound")
     lines += [
         f"Columns: initial = initial configurations up to translation; escaped = successors outside the {outside} "
@@ -566,10 +577,15 @@ def prove_deciders(results: list[dict[str, Any]]) -> list[str]:
 
 
 def lemma_lines(model: Any, results: list[dict[str, Any]]) -> list[str]:
-    """One line per lemma with rows: its lemma-level verdict and why (:mod:`fatline_verify.prove.coverage`)."""
+    """One line per lemma with rows: its lemma-level verdict and why (:mod:`fatline_verify.prove.coverage`);
+    under a PROVED, one line for each thing it rests on (obligations, facts assumed, lattice, rounds, solver)."""
     from .prove.coverage import lemma_verdicts
 
-    return [f"{v.lemma}: {v.verdict}: {v.why}" for v in lemma_verdicts(model, results)]
+    lines = []
+    for v in lemma_verdicts(model, results):
+        lines.append(f"{v.lemma}: {v.verdict}: {v.why}")
+        lines += [f"    rests on: {line}" for line in v.rests_on]
+    return lines
 
 
 def prove_lines(model: Any, results: list[dict[str, Any]], out: Any, *, verbose: bool = False) -> list[str]:

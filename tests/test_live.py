@@ -219,6 +219,7 @@ TOYS = {"toy-right": 0, "toy-far": 1}
 
 @pytest.fixture
 def toys() -> Iterator[dict[str, object]]:
+    registry.names()  # every rule set loaded before the registry is saved (and restored after)
     before = dict(registry._REGISTRY)
     for name, reach in TOYS.items():
         registry.register(
@@ -308,10 +309,14 @@ def test_lemma_level_verdicts_stuck_refutes_a_bad_round_does_not(toys) -> None:
     from fatline_verify.prove.coverage import liveness_verdicts
 
     model = toys["toy-right"]
-    assert liveness_verdicts(model, _rows(model, {})) == {
-        Lemma.PROGRESS: ("PROVED", "every enabledness row PROVED"),
-        Lemma.TERMINATION: ("PROVED", "progress, the measure and its bound, no-collision and connectivity"),
-    }
+    got = liveness_verdicts(model, _rows(model, {}))
+    assert got[Lemma.PROGRESS] == ("PROVED", "every enabledness row PROVED")
+    # every liveness row PROVED, yet no safety rows and no obligation bounding sum(-x): never PROVED
+    verdict, why = got[Lemma.TERMINATION]
+    assert verdict == "NOT PROVED"
+    assert "no-collision: no obligations (the rule set has no safety encoding)" in why
+    assert "connectivity: no obligations" in why
+    assert "component [-1, 0]: needs rma-fixed's seen rows PROVED" in why
     bad_round = liveness_verdicts(model, _rows(model, {"termination/measure-right": "VIOLATED"}))
     assert bad_round[Lemma.PROGRESS][0] == "PROVED" and bad_round[Lemma.TERMINATION][0] == "NOT PROVED"
     stuck = liveness_verdicts(model, _rows(model, {"progress/enabled-stay": "VIOLATED"}))
@@ -321,9 +326,66 @@ def test_lemma_level_verdicts_stuck_refutes_a_bad_round_does_not(toys) -> None:
     assert liveness_verdicts(model, []) == {}
 
 
+def test_a_declared_bound_is_not_believed(toys) -> None:
+    """``bounded_proved=True`` is the rule set's word: the bound still needs an obligation of its own."""
+    from fatline_verify.prove.coverage import measure_bounds
+
+    model = toys["toy-right"]
+    assert registry.of(model).liveness.bounded_proved
+    [(component, why, ok)] = measure_bounds(model, _rows(model, {}))
+    assert component == (-1, 0) and not ok and "rma-fixed" in why
+
+
+def _all_rows(model, verdicts):
+    """A results row for every obligation of ``model`` (two movers included): PROVED unless ``verdicts`` says."""
+    from fatline_verify.prove.tasks import row_key
+
+    out = []
+    for t in tasks_for(model, two_movers=True):
+        row = {"lemma": str(t.lemma), "form": t.form, "rule": "any", "case": getattr(t, "case", "any") or "any"}
+        row.update({"other": t.other} if getattr(t, "other", "") else {})
+        row["verdict"] = verdicts.get(row_key(row), "PROVED")
+        row["reason"] = "unsat on the lattice q=1" if t.form == "measure" else "unsat over the reals"
+        out.append(row)
+    return out
+
+
+def test_termination_proved_only_with_every_part_and_it_says_what_it_rests_on(paper) -> None:
+    """The paper's rules with a measure of sum(-x) alone (a what-if: rows all PROVED by hand): termination is
+    PROVED only when safety, rma-fixed's seen rows (the bound) and every liveness row are, and then it lists
+    what it rests on; one safety row short of that, it is NOT PROVED naming the lemma."""
+    from dataclasses import replace
+
+    from fatline_verify.prove.coverage import lemma_verdicts
+    from fatline_verify.prove.tasks import row_key
+
+    before = registry._REGISTRY["paper"]
+    registry._REGISTRY["paper"] = replace(before, liveness=replace(before.liveness, measure=((-1, 0),)))
+    try:
+        rows = _all_rows(paper, {})
+        keys = [row_key(r) for r in rows]
+        got = {v.lemma: v for v in lemma_verdicts(paper, rows)}
+        assert got["termination"].verdict == "PROVED", got["termination"].why
+        rests = "\n".join(got["termination"].rests_on)
+        assert "no-collision: PROVED" in rests and "connectivity: PROVED" in rests
+        assert "bound of component [-1, 0]: no x exceeds the initial greatest x" in rests
+        assert "lattice: over the reals (every lattice); on the lattice q = 1 only" in rests
+        assert "solver: z3 " in rests and "scheduler ssync" in rests
+        one = next(k for k in keys if k.startswith("no-collision/one-mover"))
+        short = {v.lemma: v for v in lemma_verdicts(paper, _all_rows(paper, {one: "INCONCLUSIVE"}))}
+        assert short["termination"].verdict == "NOT PROVED" and "no-collision NOT PROVED" in short["termination"].why
+        seen = next(k for k in keys if k.startswith("rma-fixed/seen"))
+        unbounded = {v.lemma: v for v in lemma_verdicts(paper, _all_rows(paper, {seen: "INCONCLUSIVE"}))}
+        assert unbounded["termination"].verdict == "NOT PROVED"
+        assert "component [-1, 0]: needs rma-fixed's seen rows PROVED" in unbounded["termination"].why
+    finally:
+        registry._REGISTRY["paper"] = before
+
+
 def test_the_paper_measure_without_a_bound_never_gives_termination(paper) -> None:
     from fatline_verify.prove.coverage import liveness_verdicts
 
-    got = liveness_verdicts(paper, _rows(paper, {}))
+    got = liveness_verdicts(paper, _all_rows(paper, {}))
     assert got[Lemma.PROGRESS][0] == "PROVED"
-    assert got[Lemma.TERMINATION] == ("NOT PROVED", "the measure's bound is not argued")
+    verdict, why = got[Lemma.TERMINATION]
+    assert verdict == "NOT PROVED" and why == "the measure's bound: component [0, 1]: no obligation bounds it"

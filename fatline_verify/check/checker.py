@@ -34,6 +34,7 @@ from .checkpoint import claim_checkpoint
 from .engines import engine_for
 from .exploration import Exploration
 from .initial import initial_array, initial_keys
+from .offlattice import OffLattice
 from .search import explore_keys
 from .verdicts import lemma_verdicts
 from .workers import Cluster, require_dask
@@ -65,6 +66,8 @@ class SearchStats:
     """The exploration bound (``None``: the window)."""
     nbytes: int = 0
     """Bytes held by the search's arrays at the end."""
+    asked: str = ""
+    """The engine asked for, when another made the search (a decision off the lattice: ``scalar``)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -331,7 +334,7 @@ def check_robots(
     stats = SearchStats(
         n,
         plan.window,
-        plan.engine,
+        ex.engine,
         ex.n_initial,
         ex.n_states,
         ex.n_transitions,
@@ -342,6 +345,7 @@ def check_robots(
         time.perf_counter() - t0,
         plan.bound,
         ex.nbytes,
+        "" if ex.engine == plan.engine else plan.engine,
     )
     return stats, results
 
@@ -410,24 +414,35 @@ def explore_robots(
             rate = states / max(time.perf_counter() - started, 1e-9)
             report(f"n={n}: level {level}", done, frontier, f"{states:,} states, {rate:,.0f} states/s")
 
-    pool = None if cluster is None else cluster.shards(system, n, bound, plan.engine, plan.after_violation)
-    ex = explore_keys(
-        system,
-        n,
-        initial,
-        bound,
-        plan.engine,
-        max_states=plan.max_states,  # None: the memory budget is the only limit
-        max_bytes=plan.max_memory or None,
-        after_violation=plan.after_violation,
-        progress=tick,
-        pool=pool,
-        checkpoint=None if plan.checkpoint is None else plan.checkpoint / f"n{n}",
-        initial_window=window,
-    )
-    if pool is not None:
-        pool.close()
-    return ex
+    def search(engine: str) -> Exploration:
+        pool = None if cluster is None else cluster.shards(system, n, bound, engine, plan.after_violation)
+        try:
+            return explore_keys(
+                system,
+                n,
+                initial,
+                bound,
+                engine,
+                max_states=plan.max_states,  # None: the memory budget is the only limit
+                max_bytes=plan.max_memory or None,
+                after_violation=plan.after_violation,
+                progress=tick,
+                pool=pool,
+                checkpoint=None if plan.checkpoint is None else plan.checkpoint / f"n{n}",
+                initial_window=window,
+            )
+        finally:
+            if pool is not None:
+                pool.close()
+
+    try:
+        return search(plan.engine)
+    except OffLattice as off:
+        if plan.engine == "scalar":  # pragma: no cover - the scalar engine never packs moves
+            raise
+        if progress is not None:
+            progress(f"n={n}: {off}; continuing on the scalar engine", 0, 0, "")
+        return search("scalar")  # the exploration's engine says which engine made it
 
 
 def witness_path(directory: Path, prefix: str, lemma: Lemma | StepLemma, robots: int) -> Path:

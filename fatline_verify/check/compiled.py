@@ -47,6 +47,7 @@ from .compiled_common import GOALS, Events, Rows, at_goal, connected, settle
 from .fast import pair_collides, snapshot_cells
 from .hashtable import HashTable, distinct, find
 from .keys import snapshot_key
+from .offlattice import lattice_move
 
 _CORNER_NONE, _CORNER_H, _CORNER_V = 0, 1, 2
 
@@ -423,9 +424,7 @@ class CompiledEngine:
         rows = np.zeros((len(keys), 3), dtype=np.int64)
         for r, key in enumerate(keys.tolist()):
             d = self.rule(self._decode_snapshot(key, n), self.model)
-            dest = d.destination
-            if any(not isinstance(v, int) for v in dest):
-                raise ValueError(f"decision {dest} is off the lattice; the compiled engine needs lattice moves")
+            dest = lattice_move("compiled", d)
             kind = _CORNER_NONE
             if len(d.path) == 3:
                 kind = _CORNER_H if d.path[1][1] == 0 else _CORNER_V

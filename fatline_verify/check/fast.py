@@ -26,6 +26,7 @@ from ..model.lattice import KeyTable, connected, goal_positions
 from ..rules.registry import decider
 from ..schedulers.base import Expansion
 from ..schedulers.round import closest_dist2, collides
+from .offlattice import lattice_move
 
 _CORNER_NONE, _CORNER_H, _CORNER_V = 0, 1, 2
 
@@ -114,9 +115,7 @@ class FastEngine:
             rows = np.zeros((len(first), 3), dtype=np.int64)
             for r, key in enumerate(keys[first].tolist()):
                 d = self.rule(self._decode_snapshot(key, n), self.model)
-                dest = d.destination
-                if any(not isinstance(v, int) for v in dest):
-                    raise ValueError(f"decision {dest} is off the lattice; the fast engine needs lattice moves")
+                dest = lattice_move("fast", d)
                 corner = _CORNER_NONE
                 if len(d.path) == 3:
                     corner = _CORNER_H if d.path[1][1] == 0 else _CORNER_V

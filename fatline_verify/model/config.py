@@ -111,6 +111,17 @@ class Model:
         if self.rules in IMPLIED:
             object.__setattr__(self, "rules", implied_rules(self.options))
 
+    @property
+    def ref(self) -> str:
+        """How a command names this model: its shipped name, or the file it was read from (advice in an
+        error, ``fatline check REF``, must work for a model file too)."""
+        if not self.source:
+            return self.name
+        path = Path(self.source)
+        if path.resolve() == (MODELS_DIR / f"{self.name}.toml").resolve():
+            return self.name
+        return self.source
+
     def with_q(self, q: int) -> Model:
         """The same model on a lattice of ``q`` points per radius (every other parameter kept)."""
         return replace(self, parameters=replace(self.parameters, q=q))

@@ -52,6 +52,32 @@ def _two_movers(model: Model) -> str:
 
 
 @dataclass(frozen=True)
+class Fact:
+    """A fact about the rules' code that a lemma's argument uses and no obligation of its proves: what it
+    says and how it is checked (exhaustively over every view at q = 1, by a test, by inspection)."""
+
+    name: str
+    says: str
+    checked: str
+
+
+LEGS_FACTS = (
+    Fact(
+        "legs",
+        "every move of the repaired rules is one leg (horizontal right, top, bottom) that repairs.allowed passed, "
+        "whatever rule chose it",
+        "by test: leg_of and allowed on the repaired rules' decisions in random swarms (tests/test_legs.py)",
+    ),
+    Fact(
+        "lock",
+        "a robot that sees a robot strictly left of it stays (so the bridge robot b of a bridged edge is at rest)",
+        "by test: the bridge robot of every bridged edge in random swarms stays (tests/test_legs.py)",
+    ),
+)
+"""What the repaired rules' leg obligations rest on beside their rows (:mod:`fatline_verify.prove.smt.legs`)."""
+
+
+@dataclass(frozen=True)
 class Part:
     """One part of a lemma's argument: the obligation forms that make it, what it says, whether a
     replayed counterexample of it breaks the lemma itself."""
@@ -68,6 +94,8 @@ class Part:
     """The lemma whose rows hold the forms, if not the entry's own (the legs' rightward: approach's)."""
     cases: Callable[[Model], tuple[str, ...]] = field(default=lambda model: (), compare=False)
     """Case-name prefixes the part needs a row of under ``model`` (the repairs' own destinations)."""
+    facts: tuple[Fact, ...] = ()
+    """Facts about the code its rows assume (listed with every PROVED that rests on the part)."""
 
 
 @dataclass(frozen=True)
@@ -152,14 +180,24 @@ TABLE: tuple[Entry, ...] = (
     paper_lemma(Lemma.APPROACH, (X_STEP, REACHES), "liveness: needs a measure, not a step fact"),
     legs_lemma(
         Lemma.NO_COLLISION,
-        (Part("leg", ("leg",), "r's leg against a robot at rest or on any leg: never within 2", refutes=True),),
+        (
+            Part(
+                "leg",
+                ("leg",),
+                "r's leg against a robot at rest or on any leg: never within 2",
+                refutes=True,
+                facts=LEGS_FACTS[:1],
+            ),
+        ),
         "every collision is between a mover and another robot, at rest or moving by a leg",
     ),
     legs_lemma(
         Lemma.CONNECTIVITY,
         (
-            Part("kept", ("kept",), "an edge both movers' tests kept stays an edge"),
-            Part("bridged", ("bridged",), "an edge a mover's test bridged is a path of two edges after"),
+            Part("kept", ("kept",), "an edge both movers' tests kept stays an edge", facts=LEGS_FACTS[:1]),
+            Part(
+                "bridged", ("bridged",), "an edge a mover's test bridged is a path of two edges after", facts=LEGS_FACTS
+            ),
         ),
         "every edge before the round is a path of at most two edges after it",
     ),
@@ -188,6 +226,10 @@ class LemmaVerdict:
     rows: int
     counts: str
     """Its rows' verdicts, PROVED split by basis (``12 PROVED (1 substantive, 9 immediate, 2 vacuous), 3 VIOLATED``)."""
+    rests_on: tuple[str, ...] = ()
+    """For PROVED: everything the verdict rests on, one line each (the obligations, the facts assumed and how
+    each is checked, the lattice, the scheduler and motion, the solver), as Pactole lists a theorem's
+    assumptions; ``fatline prove`` prints them under the lemma."""
 
 
 def entry_for(lemma: str, encoding: str) -> Entry | None:
@@ -279,7 +321,65 @@ def judge(entry: Entry, model: Model, rows: list[dict[str, Any]]) -> LemmaVerdic
         return LemmaVerdict(
             entry.lemma, NOT_PROVED, f"{done}missing: {'; '.join(missing)}{tail}", len(mine), _count(mine)
         )
-    return LemmaVerdict(entry.lemma, PROVED, f"{entry.argument}: {', '.join(proved)}{tail}", len(mine), _count(mine))
+    used = [r for part in entry.parts if not part.needed(model) for r in rows_of(part)]
+    facts = tuple(dict.fromkeys(f for part in entry.parts if not part.needed(model) for f in part.facts))
+    return LemmaVerdict(
+        entry.lemma,
+        PROVED,
+        f"{entry.argument}: {', '.join(proved)}{tail}",
+        len(mine),
+        _count(mine),
+        rests_on(model, used, facts),
+    )
+
+
+_LATTICE = re.compile(r"lattice q=(\d+)")
+
+
+def lattices(rows: Sequence[dict[str, Any]]) -> str:
+    """Where PROVED ``rows`` were proved: over the reals (every real configuration), on the lattice
+    q = k (a per-lattice argument: the verdict is for that lattice only), or both."""
+    qs = sorted({int(m.group(1)) for r in rows if (m := _LATTICE.search(str(r.get("reason", ""))))})
+    reals = any(not _LATTICE.search(str(r.get("reason", ""))) for r in rows)
+    parts = (["over the reals (every lattice)"] if reals else []) + [f"on the lattice q = {q} only" for q in qs]
+    return "; ".join(parts) or "no rows"
+
+
+def solver() -> str:
+    """The solver the rows were decided by, with its version (read without importing it)."""
+    from importlib import metadata
+
+    try:
+        return f"z3 {metadata.version('z3-solver')}"
+    except metadata.PackageNotFoundError:  # pragma: no cover - z3 is a dependency
+        return "z3 (version unknown)"
+
+
+def rests_on(
+    model: Model, rows: Sequence[dict[str, Any]], facts: Sequence[Fact] = (), more: Sequence[str] = ()
+) -> tuple[str, ...]:
+    """What a lemma-level PROVED rests on: its obligation rows (by form and basis), the facts assumed and
+    how each is checked, the lattice, the scheduler and motion, the solver, and ``more`` (other lemmas)."""
+    forms = ", ".join(f"{n} {f}" for f, n in _form_counts(rows).items())
+    split = f"; {counts_text(list(rows))}" if any(r.get("basis") for r in rows) else ""
+    out = [f"obligations: {len(rows)} PROVED ({forms}{split})"]
+    out += [f"assumed: {f.name}: {f.says} (checked: {f.checked})" for f in facts]
+    out += list(more)
+    out += [
+        f"lattice: {lattices(rows)}",
+        f"rounds: scheduler {model.options.scheduler}, motion {model.options.motion}, timing {model.options.timing}; "
+        "one shared snapshot per round, exact arithmetic, unit discs",
+        f"rule set: {model.rules} ({registry.of(model).summary.rstrip('.')})",
+        f"solver: {solver()}",
+    ]
+    return tuple(out)
+
+
+def _form_counts(rows: Sequence[dict[str, Any]]) -> dict[str, int]:
+    out: dict[str, int] = {}
+    for r in rows:
+        out[str(r.get("form"))] = out.get(str(r.get("form")), 0) + 1
+    return out
 
 
 def part_forms_seen(entry: Entry, by_form: dict[str, list[dict[str, Any]]]) -> bool:
@@ -287,8 +387,11 @@ def part_forms_seen(entry: Entry, by_form: dict[str, list[dict[str, Any]]]) -> b
 
 
 def encoding_of(model: Model) -> str:
-    """The encoding the prover uses for ``model``: ``legs`` for a repaired rule set, else ``paper``."""
-    return "legs" if model.options.repaired else "paper"
+    """The encoding the prover uses for ``model`` (:func:`fatline_verify.prove.tasks.encoding_name`),
+    ``""`` without one (no table entry then: its safety lemmas have no rows)."""
+    from .tasks import encoding_name
+
+    return encoding_name(model) or ""
 
 
 LIVENESS = (str(Lemma.PROGRESS), str(Lemma.TERMINATION))
@@ -303,10 +406,80 @@ def liveness_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemm
       enabledness row is; otherwise NOT PROVED.
     - termination: VIOLATED only by a replayed stuck configuration (a run that never reaches the goal);
       a VIOLATED measure row only leaves it NOT PROVED (one round that does not decrease the measure is
-      not a run that never ends). PROVED when progress is, every measure row is PROVED, the bound is
-      argued (:attr:`~fatline_verify.rules.registry.Liveness.bounded_proved`) and every no-collision and
-      connectivity row present is PROVED (the argument assumes a connected swarm that never collides).
+      not a run that never ends). PROVED only when every part is present and PROVED for this rule set by
+      its own rows: progress, every measure row, a bound below for every component of the measure
+      (:func:`measure_bounds`: an obligation proves it, never the rule set's word), and no-collision and
+      connectivity at lemma level (the argument assumes a swarm that stays connected and never
+      collides). A part absent (a rule set without a safety encoding has no such rows) is missing, never
+      taken as proved.
     """
+    return {lemma: (v.verdict, v.why) for lemma, v in live_verdicts(model, rows).items()}
+
+
+def measure_bounds(model: Model, rows: Sequence[dict[str, Any]]) -> list[tuple[tuple[int, int], str, bool]]:
+    """For each component ``(a, b)`` of the declared measure: why its sum over the robots is bounded below
+    on every configuration the rules reach, and whether an obligation of this rule set proves it.
+
+    - ``(0, 0)``: constant.
+    - ``(a, 0)`` with ``a < 0``: ``sum(a x) >= a n x_max`` while no robot ever ends right of the initial
+      greatest x, which rma-fixed's ``seen`` rows prove (no move ends right of the mover and of every
+      robot it sees, so none right of the right-most robot).
+    - anything else: no obligation of the tool proves a bound (the rule set's own words, :attr:`Liveness.bounded`,
+      are not evidence)."""
+    declared = registry.of(model).liveness
+    if declared is None:
+        return []
+    out: list[tuple[tuple[int, int], str, bool]] = []
+    for a, b in declared.measure:
+        if a == 0 and b == 0:
+            out.append(((a, b), "constant", True))
+        elif b == 0 and a < 0:
+            seen = _part_verdict(model, rows, str(Lemma.RMA_FIXED), "seen")
+            if seen is not None and seen.verdict == PROVED:
+                out.append(
+                    ((a, b), f"no x exceeds the initial greatest x (rma-fixed's seen rows: {seen.counts})", True)
+                )
+            else:
+                why = "no rows" if seen is None else f"{seen.verdict}: {seen.why}"
+                out.append(((a, b), f"needs rma-fixed's seen rows PROVED ({why})", False))
+        else:
+            out.append(((a, b), "no obligation bounds it", False))
+    return out
+
+
+def _part_verdict(model: Model, rows: Sequence[dict[str, Any]], lemma: str, part: str) -> LemmaVerdict | None:
+    """The verdict of one part of a lemma's table entry on its own (``None``: no entry or no such part)."""
+    entry = entry_for(lemma, encoding_of(model))
+    if entry is None:
+        return None
+    chosen = tuple(p for p in entry.parts if p.name == part)
+    if not chosen:
+        return None
+    return judge(Entry(entry.lemma, entry.encoding, chosen, f"{lemma}'s {part} part"), model, list(rows))
+
+
+def _safety(model: Model, rows: Sequence[dict[str, Any]]) -> tuple[list[str], list[LemmaVerdict]]:
+    """No-collision and connectivity at lemma level from ``model``'s own rows: what is missing, and the
+    verdicts that are PROVED."""
+    missing: list[str] = []
+    proved: list[LemmaVerdict] = []
+    for lemma in (str(Lemma.NO_COLLISION), str(Lemma.CONNECTIVITY)):
+        entry = entry_for(lemma, encoding_of(model))
+        if entry is None:
+            missing.append(f"{lemma}: no obligations (the rule set has no safety encoding)")
+            continue
+        v = judge(entry, model, list(rows))
+        if v.verdict == PROVED:
+            proved.append(v)
+        elif not v.rows:
+            missing.append(f"{lemma}: no rows (run fatline prove {model.ref} with every lemma)")
+        else:
+            missing.append(f"{lemma} {v.verdict}")
+    return missing, proved
+
+
+def live_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, LemmaVerdict]:
+    """:func:`liveness_verdicts` with each verdict's rows, counts and what a PROVED rests on."""
     from .tasks import row_key, tasks_for
 
     declared = registry.of(model).liveness
@@ -326,12 +499,17 @@ def liveness_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemm
         left = [k.split("/", 1)[1] for k, v in zip(keys, verdicts(keys), strict=True) if v != "PROVED"]
         return f"{len(left)} of {len(keys)} rows not PROVED ({', '.join(left[:3])}{', ...' if len(left) > 3 else ''})"
 
+    def made(lemma: Lemma, verdict: str, why: str, rests: tuple[str, ...] = ()) -> LemmaVerdict:
+        mine = [r for r in rows if r.get("lemma") == str(lemma)]
+        return LemmaVerdict(str(lemma), verdict, why, len(mine), _count(mine), rests)
+
     stuck = [k for k, v in zip(enabled, verdicts(enabled), strict=True) if v == "VIOLATED"]
-    out: dict[Lemma, tuple[str, str]] = {}
+    out: dict[Lemma, LemmaVerdict] = {}
     problem = goal_problem(model)
     if problem:  # no enabledness rows (tasks_for leaves them out): nothing said of progress
-        out[Lemma.PROGRESS] = (NOT_ENCODED, problem)
-        out[Lemma.TERMINATION] = (
+        out[Lemma.PROGRESS] = made(Lemma.PROGRESS, NOT_ENCODED, problem)
+        out[Lemma.TERMINATION] = made(
+            Lemma.TERMINATION,
             NOT_PROVED,
             "progress not encoded for this goal; measure: "
             + ("every row PROVED" if all(v == "PROVED" for v in verdicts(measure)) else open_text(measure)),
@@ -339,27 +517,48 @@ def liveness_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemm
         return out
     if stuck:
         why = f"a replayed stuck configuration ({stuck[0]})"
-        out[Lemma.PROGRESS] = ("VIOLATED", why)
-        out[Lemma.TERMINATION] = ("VIOLATED", why)
+        out[Lemma.PROGRESS] = made(Lemma.PROGRESS, VIOLATED, why)
+        out[Lemma.TERMINATION] = made(Lemma.TERMINATION, VIOLATED, why)
         return out
     progress_ok = all(v == "PROVED" for v in verdicts(enabled))
-    out[Lemma.PROGRESS] = (
-        ("PROVED", "every enabledness row PROVED") if progress_ok else ("NOT PROVED", open_text(enabled))
+    enabled_rows = [by_key[k] for k in enabled if k in by_key]
+    connected = entry_for(str(Lemma.CONNECTIVITY), encoding_of(model))
+    link = judge(connected, model, list(rows)).verdict if connected is not None else "no safety encoding"
+    premise = (
+        "premise: the claim is about connected non-goal configurations (whether the rules keep a swarm "
+        f"connected is connectivity's own lemma; here: {link})"
     )
-    safety = [k for k in by_key if k.split("/", 1)[0] in (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)]
+    if progress_ok:
+        out[Lemma.PROGRESS] = made(
+            Lemma.PROGRESS, PROVED, "every enabledness row PROVED", rests_on(model, enabled_rows, more=(premise,))
+        )
+    else:
+        out[Lemma.PROGRESS] = made(Lemma.PROGRESS, NOT_PROVED, open_text(enabled))
     missing: list[str] = []
     if not progress_ok:
         missing.append("progress not proved")
     if not all(v == "PROVED" for v in verdicts(measure)):
         missing.append("measure: " + open_text(measure))
-    if not declared.bounded_proved:
-        missing.append("the measure's bound is not argued")
-    if any(by_key[k]["verdict"] != "PROVED" for k in safety):
-        missing.append("a no-collision or connectivity row is not PROVED")
+    bounds = measure_bounds(model, rows)
+    missing += [f"the measure's bound: component {list(c)}: {why}" for c, why, ok in bounds if not ok]
+    unsafe, safe = _safety(model, rows)
+    missing += unsafe
     if missing:
-        out[Lemma.TERMINATION] = ("NOT PROVED", "; ".join(missing))
-    else:
-        out[Lemma.TERMINATION] = ("PROVED", "progress, the measure and its bound, no-collision and connectivity")
+        out[Lemma.TERMINATION] = made(Lemma.TERMINATION, NOT_PROVED, "; ".join(missing))
+        return out
+    measure_rows = [by_key[k] for k in measure]
+    more = (
+        "progress: PROVED (every enabledness row)",
+        *(f"bound of component {list(c)}: {why}" for c, why, _ in bounds),
+        *(f"{v.lemma}: PROVED ({v.counts})" for v in safe),
+        f"fair scheduler ({model.options.scheduler}): an enabled robot is activated within finitely many rounds",
+    )
+    out[Lemma.TERMINATION] = made(
+        Lemma.TERMINATION,
+        PROVED,
+        "progress, the measure and its bound, no-collision and connectivity",
+        rests_on(model, [*enabled_rows, *measure_rows], more=more),
+    )
     return out
 
 
@@ -369,14 +568,12 @@ def lemma_verdicts(
     """Every lemma with rows in ``rows`` (or each of ``lemmas``), judged by its table entry."""
     wanted = lemmas if lemmas is not None else tuple(dict.fromkeys(str(r.get("lemma")) for r in rows))
     out = []
-    live: dict[Lemma, tuple[str, str]] | None = None
+    live: dict[Lemma, LemmaVerdict] | None = None
     for lemma in wanted:
         if lemma in LIVENESS:
-            live = live if live is not None else liveness_verdicts(model, rows)
+            live = live if live is not None else live_verdicts(model, rows)
             if Lemma(lemma) in live:
-                verdict, why = live[Lemma(lemma)]
-                mine = [r for r in rows if r.get("lemma") == lemma]
-                out.append(LemmaVerdict(lemma, verdict, why, len(mine), _count(mine)))
+                out.append(live[Lemma(lemma)])
             continue
         entry = entry_for(lemma, encoding_of(model))
         if entry is None:
@@ -393,11 +590,16 @@ __all__ = [
     "TABLE",
     "VIOLATED",
     "Entry",
+    "Fact",
     "LemmaVerdict",
     "Part",
     "judge",
+    "lattices",
     "legs_lemma",
     "lemma_verdicts",
+    "live_verdicts",
     "liveness_verdicts",
+    "measure_bounds",
     "paper_lemma",
+    "rests_on",
 ]

@@ -36,7 +36,7 @@ from .search import Budget
 from .smt.cases import Arith
 from .smt.live_rules import LiveCase, live_cases
 from .smt.liveness import ENABLED, LiveSpec, build_enabled, build_measure, goal_problem, header
-from .tasks import ProofResult
+from .tasks import ProofResult, encoding_name
 
 REALS_SHARE = 0.4
 """The share of the budget the real-number question gets before the lattice search."""
@@ -89,7 +89,7 @@ def prove_live(model: Model, spec: LiveSpec, *, timeout: float, out: Path | None
         verdict, why, doc, config = replay_measure(model, spec, first.positions)
         if verdict is Verdict.VIOLATED:
             return result(verdict, why, doc, config)
-    small = enabled and registry.of(model).prover == "paper"
+    small = enabled and encoding_name(model) == "paper"  # the paper's rules: their cases name a decision
     if small:  # the fewest robots first: the smallest stuck configuration, by the executable model alone
         found = small_stuck(model, spec)
         if found is not None:

@@ -36,8 +36,16 @@ ENCODED = encoded_schedulers()
 """The schedulers the obligations encode: every mover decides on one shared snapshot."""
 
 
-ENCODINGS = {"paper": "the paper's decision cases", "legs": "the repaired rules' legs"}
-"""The rule-set encodings the obligations implement, by :attr:`~fatline_verify.rules.registry.RuleSet.prover`."""
+def encoding_name(model: Model) -> str | None:
+    """The obligations ``model`` is proved by: the encoding its rule set carries
+    (:func:`fatline_verify.rules.registry.encoding_of`, refused in one line when it encodes another
+    rule set's ``decide``), ``None`` without one. The repaired rules' legs with every repair off are
+    the paper's rules (:func:`fatline_verify.rules.repaired.algorithm.repair` leaves each decision as
+    it is), proved by the paper's case table."""
+    encoding = registry.encoding_of(registry.of(model), model)
+    if encoding is None:
+        return None
+    return "paper" if encoding.name == "legs" and not model.options.repaired else encoding.name
 
 
 class NotEncodedModel(InvalidInput):
@@ -127,24 +135,25 @@ def check_encoded(model: Model) -> None:
     paper's rules in place of a repaired rule set the leg obligations do not cover, never a rule set
     without an encoding of its own (:attr:`fatline_verify.rules.registry.RuleSet.prover`)."""
     rule_set = registry.of(model)
-    if rule_set.prover not in ENCODINGS and rule_set.liveness is None:
+    if encoding_name(model) is None and rule_set.liveness is None:
         raise NotEncodedModel(
-            f"rules={rule_set.name!r}: fatline prove has no encoding of this rule set (it encodes "
-            f"{', '.join(ENCODINGS.values())}); expected a rule set it encodes. Use fatline check {model.name}"
+            f"rules={rule_set.name!r}: fatline prove has no encoding of this rule set (RuleSet.prover is None; "
+            f"it encodes {', '.join(e.says for e in registry.ENCODINGS.values())}, each for its own rule set); "
+            f"expected a rule set with an encoding of its own. Use fatline check {model.ref}"
         )
     scheduler = model.options.scheduler
     if scheduler not in ENCODED and scheduler is not Scheduler.ASYNC:
         raise NotEncodedModel(
             f"scheduler={scheduler}: fatline prove has no encoding of this scheduler's rounds (it encodes "
-            f"{', '.join(s.value for s in ENCODED)}); expected one of those. Use fatline check {model.name}"
+            f"{', '.join(s.value for s in ENCODED)}); expected one of those. Use fatline check {model.ref}"
         )
     if scheduler not in ENCODED:
         raise NotEncodedModel(
             f"scheduler={scheduler}: fatline prove encodes rounds in which every mover decides on one shared "
             f"snapshot ({', '.join(s.value for s in ENCODED)}); an asynchronous robot may decide on a stale view. "
-            f"Use fatline check {model.name} for this scheduler"
+            f"Use fatline check {model.ref} for this scheduler"
         )
-    if model.options.repaired:
+    if encoding_name(model) == "legs":
         missing = missing_repairs(model)
         if missing:
             raise NotEncodedModel(
@@ -156,7 +165,7 @@ def check_encoded(model: Model) -> None:
             raise NotEncodedModel(
                 "repair_progress='corner': the leg obligations do not cover corner legs (right and vertical at "
                 "once, up to sqrt(2) long, so two far movers may close a gap of more than rad_v to less than 2 "
-                f"unless their neighbours rule it out); expected off or detour. Use fatline check {model.name}"
+                f"unless their neighbours rule it out); expected off or detour. Use fatline check {model.ref}"
             )
 
 
@@ -186,16 +195,17 @@ def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: b
     only, as their real form is beyond the budgets tried), which ``fatline prove --two-movers`` asks for."""
     check_encoded(model)
     live = _live_tasks(model, lemmas)
-    if registry.of(model).prover not in ENCODINGS:  # liveness declared, safety not encoded
+    encoding = encoding_name(model)
+    if encoding is None:  # liveness declared, safety not encoded
         safety = [lemma for lemma in lemmas if lemma not in LIVENESS]
         if safety and tuple(lemmas) != LEMMAS:
             raise NotEncodedModel(
                 f"rules={model.rules!r}: fatline prove encodes only this rule set's liveness obligations (it declares "
                 "no safety encoding); expected --lemma progress, termination or liveness. "
-                f"Use fatline check {model.name}"
+                f"Use fatline check {model.ref}"
             )
         return live
-    if model.options.repaired:
+    if encoding == "legs":
         return _repaired_tasks(model, lemmas) + live
     scheduler = model.options.scheduler
     moving = moving_cases(model)
@@ -231,7 +241,7 @@ def _live_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
         if set(lemmas) <= set(LIVENESS):
             raise NotEncodedModel(
                 f"rules={model.rules!r}: the rule set declares no liveness obligations (rules/registry.py, "
-                f"RuleSet.liveness); expected a rule set that does. Use fatline check {model.name}"
+                f"RuleSet.liveness); expected a rule set that does. Use fatline check {model.ref}"
             )
         return []
     problem = goal_problem(model)

@@ -46,6 +46,61 @@ BUILTIN = (
 
 
 @dataclass(frozen=True, slots=True)
+class Encoding:
+    """The prover's encoding of one rule set's rules: the obligations it builds (:attr:`name`: ``"paper"``,
+    the paper's decision cases; ``"legs"``, the repaired rules' legs) and the decision function it is an
+    encoding **of**. A rule set carries the object itself (:attr:`RuleSet.prover`); the prover uses it only
+    for a rule set whose ``decide`` is that function (:func:`encoding_of`), so no rule set borrows another's
+    proofs by naming them."""
+
+    name: str
+    says: str
+    encodes: Decide = field(repr=False)
+    """The decision function the obligations encode (identity is what is checked)."""
+
+
+ENCODINGS: dict[str, Encoding] = {}
+"""This package's encodings by name (filled by the rule sets that own them, :func:`register_encoding`)."""
+
+
+def register_encoding(encoding: Encoding) -> Encoding:
+    """Name ``encoding`` (once) so that error messages can say what each name encodes."""
+    ENCODINGS.setdefault(encoding.name, encoding)
+    return encoding
+
+
+def _where(fn: Any) -> str:
+    return f"{getattr(fn, '__module__', '?')}.{getattr(fn, '__qualname__', repr(fn))}"
+
+
+def encoding_of(rule_set: RuleSet, model: Model | None = None) -> Encoding | None:
+    """The prover's encoding of ``rule_set`` (``None``: it has none), refused in one line
+    (:class:`InvalidModel`) when it is not an encoding of this rule set's own decision function: a name
+    (``prover="paper"``, the API before encodings were objects) or another rule set's encoding object
+    stands for another ``decide``, whose proofs say nothing of this one. ``model``: a model whose
+    ``algorithm`` replaces the rule set's ``decide`` (seeded-bug tests) is refused likewise."""
+    claimed = rule_set.prover
+    if claimed is None:
+        return None
+    _load(plugins=False)
+    encoding = ENCODINGS.get(claimed) if isinstance(claimed, str) else claimed
+    if not isinstance(encoding, Encoding):
+        raise InvalidModel(
+            f"rules={rule_set.name!r}: prover={claimed!r} is not an encoding; expected None or an Encoding object "
+            f"(fatline_verify.rules.registry.Encoding) of this rule set's own decide"
+        )
+    decide = model.algorithm if model is not None and model.algorithm is not None else rule_set.decide
+    if encoding.encodes is not decide:
+        named = f"prover={claimed!r}" if isinstance(claimed, str) else f"prover=Encoding({encoding.name!r})"
+        raise InvalidModel(
+            f"rules={rule_set.name!r}: {named} is the encoding of {_where(encoding.encodes)}, not of this rule "
+            f"set's decide ({_where(decide)}); a rule set cannot claim another's proofs. Set prover=None (fatline "
+            "check still checks every lemma; fatline prove decides the liveness obligations a rule set declares)"
+        )
+    return encoding
+
+
+@dataclass(frozen=True, slots=True)
 class Liveness:
     """What a rule set declares so that ``fatline prove`` can state its liveness obligations
     (:mod:`fatline_verify.prove.live`): its decision cases encoded for the solver, and a ranking measure.
@@ -66,10 +121,13 @@ class Liveness:
     words: str
     """The measure in words (written in each measure obligation's header)."""
     bounded: str
-    """Why each component's sum is bounded below on the configurations the rules reach, or that it
-    is not known to be (then the measure rows prove the fall, not termination)."""
+    """Why the rule set's author thinks each component's sum is bounded below on the configurations the
+    rules reach (written in the measure obligations' headers; what the tool accepts as a bound is only
+    what its own obligations prove, :func:`fatline_verify.prove.coverage.measure_bounds`)."""
     bounded_proved: bool = False
-    """Whether :attr:`bounded` is an argument for every component (``False``: not argued for some)."""
+    """Not believed (the field is kept so that rule sets written against the earlier API still load): a
+    component's bound counts only where an obligation of the rule set's own proves it
+    (:func:`fatline_verify.prove.coverage.measure_bounds`), whatever this says."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -82,9 +140,11 @@ class RuleSet:
     options: frozenset[str] = frozenset()
     """The options of the catalogue it reads, beside :data:`MODEL_OPTIONS`; a model setting any other
     option is refused."""
-    prover: str | None = None
-    """The prover's encoding of these rules (``"paper"``: the paper's decision cases; ``"legs"``: the
-    leg obligations of the repaired rules); ``None``: ``fatline prove`` refuses the rule set."""
+    prover: Encoding | str | None = None
+    """The prover's encoding of these rules, an :class:`Encoding` of this rule set's own ``decide``
+    (the paper's decision cases; the repaired rules' legs); ``None``: ``fatline prove`` refuses the rule
+    set's safety lemmas. A name (``"paper"``) or an encoding of another ``decide`` is refused by
+    :func:`encoding_of`, the only way the prover reads this field."""
     bands: bool = False
     """Whether pictures shade the acting robot's bands A ... I (the paper's sets)."""
     labels: dict[str, str] = field(default_factory=dict, repr=False, compare=False)
@@ -173,16 +233,20 @@ def decider(model: Model) -> Decide:
 
 __all__ = [
     "BUILTIN",
+    "ENCODINGS",
     "GROUP",
     "MODEL_OPTIONS",
     "Decide",
+    "Encoding",
     "Liveness",
     "RuleSet",
     "decide",
     "decider",
+    "encoding_of",
     "get",
     "load_plugins",
     "names",
     "of",
     "register",
+    "register_encoding",
 ]

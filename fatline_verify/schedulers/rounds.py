@@ -12,6 +12,7 @@ from __future__ import annotations
 import random
 import re
 from collections.abc import Sequence
+from fractions import Fraction
 from typing import Any
 
 import numpy as np
@@ -84,7 +85,12 @@ class RoundSystem:
         return all(q[0] - p[0] == dx and q[1] - p[1] == dy for p, q in zip(a, b, strict=True))
 
     def exact_array(self, state: State) -> np.ndarray | None:
-        return self.to_array(state)
+        """The state on the model's lattice, or ``None`` when a robot is between its points (a rule set's
+        rational destination): such a successor is judged on its step and counted, never rounded onto the
+        lattice (``np.int64`` of ``Fraction(1, 2)`` is 0)."""
+        if any(not isinstance(c, int) and Fraction(c).denominator != 1 for p in state for c in p):
+            return None
+        return self.to_array(tuple((int(x), int(y)) for x, y in state))
 
     def action(self, code: int, order: Sequence[int], state: State) -> tuple[int, ...]:
         return tuple(sorted(int(order[k]) for k in range(len(order)) if code >> k & 1))

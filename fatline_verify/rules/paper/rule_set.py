@@ -1,11 +1,14 @@
 """The paper rule set's registration: its options, decision function and prover encoding."""
 
 from ...model.options import CATALOGUE
-from ..registry import MODEL_OPTIONS, Liveness, RuleSet, register
+from ..registry import MODEL_OPTIONS, Encoding, Liveness, RuleSet, register, register_encoding
 from .algorithm import decide
 
 READINGS = frozenset(name for name, spec in CATALOGUE.items() if not spec.repair) - MODEL_OPTIONS
 """The paper's open points (``fatline explain``): the options this rule set reads."""
+
+CASES = register_encoding(Encoding("paper", "the paper's decision cases", decide))
+"""The prover's encoding of the paper's rules: obligations per decision case (:mod:`fatline_verify.prove.smt.cases`)."""
 
 PAPER = register(
     RuleSet(
@@ -13,7 +16,7 @@ PAPER = register(
         decide,
         "The paper's LineForm(): NoMovement, then getDestination (Scenarios 1-4), under the model's readings.",
         options=READINGS,
-        prover="paper",
+        prover=CASES,
         bands=True,
         liveness=Liveness(
             "fatline_verify.prove.smt.live_rules:paper_cases",

@@ -6,7 +6,7 @@ from typing import Any
 from ...model.options import CATALOGUE
 from ..paper.algorithm import Decision, paper_decide
 from ..paper.rule_set import READINGS
-from ..registry import RuleSet, register
+from ..registry import Encoding, RuleSet, register, register_encoding
 from .algorithm import repair
 
 REPAIRS = frozenset(name for name, spec in CATALOGUE.items() if spec.repair)
@@ -18,13 +18,18 @@ def decide(snapshot: Sequence[Any], model: Any) -> Decision:
     return repair(paper_decide(snapshot, model), snapshot, model)
 
 
+LEGS = register_encoding(Encoding("legs", "the repaired rules' legs", decide))
+"""The prover's encoding of the repaired rules: each leg class against rest and every other class
+(:mod:`fatline_verify.prove.smt.legs`); with every repair off the rules decide as the paper's, and the
+paper's case table is used (:func:`fatline_verify.prove.coverage.encoding_name`)."""
+
 REPAIRED = register(
     RuleSet(
         "repaired",
         decide,
         "Not the paper: its LineForm() with the named repairs of the model's repair_* options.",
         options=READINGS | REPAIRS,
-        prover="legs",
+        prover=LEGS,
         bands=True,
     )
 )
