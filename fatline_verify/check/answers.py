@@ -4,10 +4,13 @@ The compiled engine asks the executable model about every snapshot and pair moti
 (:mod:`.compiled`); at 5 robots that is most of a check's search time, and every run asks the same
 questions again. This module keeps the answers on disk, one file per model and robot count, under
 ``$FATLINE_ANSWERS`` (default ``~/.cache/fatline-verify/answers``; ``off`` keeps nothing). A file is
-named by a SHA-256 of the model's mapping, the robot count and **every source file of the package**,
-so any change of a rule, of the geometry or of the engine's packing is a new name and old answers are
-never read; its content carries its own SHA-256 (:mod:`fatline_verify.integrity`), and a file that
-does not match it is ignored (the model is asked again). The answers are the model's own integers,
+named by a SHA-256 of the model's mapping, the robot count and **every source file that decides for
+the model** (:func:`fatline_verify.provenance.model_digest`: this package's, and the package of each
+plug-in rule set, step lemma, scheduler or ``model.algorithm``), so any change of a rule, of a
+plug-in, of the geometry or of the engine's packing is a new name and old answers are never read (a
+model whose plug-in's source cannot be read keeps nothing); its content carries its own SHA-256
+(:mod:`fatline_verify.integrity`), and a file that does not match it is ignored (the model is asked
+again). The answers are the model's own integers,
 stored exactly; a run with them equals a run without them (tests/test_store.py).
 """
 
@@ -18,7 +21,6 @@ import io
 import json
 import os
 import zipfile
-from functools import cache
 from pathlib import Path
 
 import numpy as np
@@ -26,6 +28,7 @@ import numpy as np
 from ..integrity import bytes_digest
 from ..model.config import Model, model_to_mapping
 from ..outputs import write_bytes
+from ..provenance import model_digest, reusable
 
 ENV = "FATLINE_ANSWERS"
 
@@ -41,22 +44,16 @@ def answers_dir() -> Path | None:
     return Path(base) / "fatline-verify" / "answers"
 
 
-@cache
-def source_digest() -> str:
-    """SHA-256 of every Python source file of the package (path and bytes), read once a process."""
-    root = Path(__file__).resolve().parent.parent
-    h = hashlib.sha256()
-    for path in sorted(root.rglob("*.py")):
-        h.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
-    return h.hexdigest()
-
-
 def answers_path(model: Model, n: int) -> Path | None:
-    """The file of ``model``'s answers for ``n`` robots (``None``: answers are not kept)."""
+    """The file of ``model``'s answers for ``n`` robots (``None``: answers are not kept, by
+    ``$FATLINE_ANSWERS=off`` or because a source that decides for the model cannot be read)."""
     where = answers_dir()
     if where is None:
         return None
-    name = json.dumps({"model": model_to_mapping(model), "robots": n, "source": source_digest()}, sort_keys=True)
+    source = model_digest(model)
+    if not reusable(source):
+        return None
+    name = json.dumps({"model": model_to_mapping(model), "robots": n, "source": source}, sort_keys=True)
     return where / f"{hashlib.sha256(name.encode()).hexdigest()[:32]}.npz"
 
 
@@ -95,4 +92,4 @@ def save_answers(path: Path | None, decisions: np.ndarray, pairs: np.ndarray) ->
         return
 
 
-__all__ = ["ENV", "answers_dir", "answers_path", "load_answers", "save_answers", "source_digest"]
+__all__ = ["ENV", "answers_dir", "answers_path", "load_answers", "save_answers"]

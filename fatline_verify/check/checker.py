@@ -470,11 +470,18 @@ def write_witnesses(result: CheckResult, directory: Path, prefix: str) -> dict[t
 
 
 def check_fingerprint(model: Model) -> str:
-    """What a check result at the model's own bounds depends on: the model and the checker's version."""
+    """What a check result at the model's own bounds depends on: the model, the checker's version,
+    the registered lemmas' versions and the sources of the plug-ins that decide for the model
+    (:func:`fatline_verify.provenance.plugin_settings`). This package's own sources are not in it (a
+    change of the checker's results bumps ``CHECKER_VERSION``), so a built-in model's fingerprint,
+    and the committed ``reports/*/check.json``, stay as they were while no plug-in is installed."""
     from ..cache import fingerprint
+    from ..provenance import plugin_settings
 
     extras = {lemma.name: lemma.version for lemma in registered()}
-    return fingerprint(model, "check", engine=CHECKER_VERSION, **({"lemmas": extras} if extras else {}))
+    return fingerprint(
+        model, "check", engine=CHECKER_VERSION, **({"lemmas": extras} if extras else {}), **plugin_settings(model)
+    )
 
 
 def check_to_json(result: CheckResult, paths: dict[tuple[str, int], str]) -> dict[str, Any]:

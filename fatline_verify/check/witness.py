@@ -5,16 +5,19 @@ The search knows canonical array states only; a witness follows real robots. Fro
 mapped to robot identities by canonicalising the current state, and played by the executable model
 of the transition system. The result must land on the recorded canonical state at every step and must
 replay from its JSON form; otherwise the engine and the model disagree, which is a bug of the tool
-and is raised, never reported as a counterexample.
+and is raised, never reported as a counterexample. When the compiled engine read answers kept by an
+earlier run (:mod:`.answers`), the message says they may be stale and how to check without them.
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
 
-from ..errors import FatlineError
+from ..errors import FatlineError, TraceDidNotReproduce
 from ..lemmas.properties import Lemma
 from ..lemmas.registry import StepLemma
 from ..trace.simulate import Outcome, Run, outcome_after
@@ -26,17 +29,36 @@ class EngineDisagreement(FatlineError):
     """The exploration and the executable model disagree on a witness (a bug of the tool)."""
 
 
+@contextmanager
+def _kept_answers_named(ex: Exploration) -> Iterator[None]:
+    """Re-raise a disagreement of the engine and the model with, when the compiled engine's kept
+    answers for this model and robot count were there to be read, that they may be stale (one line)."""
+    try:
+        yield
+    except (EngineDisagreement, TraceDidNotReproduce) as exc:
+        from .answers import ENV, answers_path
+
+        path = answers_path(ex.model, ex.n) if ex.engine == "compiled" else None
+        if path is None or not path.is_file():
+            raise
+        raise type(exc)(
+            f"{exc}; the compiled engine's answers kept between runs ({path.as_posix()}) may be stale: "
+            f"run again with {ENV}=off to check without them"
+        ) from exc
+
+
 def _follow(ex: Exploration, start_id: int, steps: list[tuple[int, int]]) -> tuple[Any, list[Any]]:
     system = ex.system
     state = system.from_array(ex.state_array(ex.root(start_id)))
     initial, played = system.positions(state), []
-    for sid, code in steps:
-        canon, order = system.canonical(system.to_array(state)[None])
-        if not np.array_equal(canon[0], ex.state_array(sid)):
-            raise EngineDisagreement(f"witness step from state {sid}: {state} is not that state")
-        step = system.play(state, system.action(code, order[0], state))
-        played.append(step)
-        state = step.target
+    with _kept_answers_named(ex):
+        for sid, code in steps:
+            canon, order = system.canonical(system.to_array(state)[None])
+            if not np.array_equal(canon[0], ex.state_array(sid)):
+                raise EngineDisagreement(f"witness step from state {sid}: {state} is not that state")
+            step = system.play(state, system.action(code, order[0], state))
+            played.append(step)
+            state = step.target
     return initial, played
 
 
@@ -50,9 +72,10 @@ def _finish(ex: Exploration, run: Run, lemma: Lemma | StepLemma) -> dict[str, An
     }
     if ex.initial_window is not None:
         origin["bound"] = list(ex.window)
-    doc = replayed_document(run, origin, lemma.value)
-    if doc["violation"] is None or doc["violation"]["property"] != lemma.value:
-        raise EngineDisagreement(f"{lemma} witness: the executable model does not show the violation")
+    with _kept_answers_named(ex):
+        doc = replayed_document(run, origin, lemma.value)
+        if doc["violation"] is None or doc["violation"]["property"] != lemma.value:
+            raise EngineDisagreement(f"{lemma} witness: the executable model does not show the violation")
     return doc
 
 

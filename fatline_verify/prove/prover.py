@@ -401,10 +401,15 @@ EARLIER = "an earlier run's counterexample"
 
 
 def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
-    """What a prover result depends on: the model, the settings, the encoding's version."""
+    """What a prover result depends on: the model, the settings, the encoding's version and the
+    sources of the plug-ins that decide for the model (:func:`fatline_verify.provenance.plugin_settings`,
+    e.g. a plug-in rule set's liveness encoding). This package's own sources are not in it (a change
+    of an obligation bumps ``ENCODING_VERSION``), so a built-in model's rows keep their fingerprints."""
     from ..cache import fingerprint
+    from ..provenance import plugin_settings
 
-    return fingerprint(model, "prove", slots=slots, timeout=timeout, encoding=ENCODING_VERSION)
+    settings = {"slots": slots, "timeout": timeout, "encoding": ENCODING_VERSION, **plugin_settings(model)}
+    return fingerprint(model, "prove", **settings)
 
 
 ENCODING_VERSION = 11

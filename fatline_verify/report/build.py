@@ -32,6 +32,7 @@ from ..check.checker import check, check_fingerprint, check_to_json, write_witne
 from ..errors import FatlineError, InvalidInput, InvalidTrace, OutputFailed, TraceDidNotReproduce
 from ..integrity import seal, sealed
 from ..lemmas.properties import CHECKED
+from ..lemmas.registry import registered
 from ..model.config import Model, load_model, model_from_mapping, model_to_mapping, shipped_models
 from ..outputs import (
     FILE_NAME,
@@ -117,7 +118,8 @@ def claim_corpus(out: Path, force: bool) -> None:
 
 def read_check_cache(cache: Path) -> dict[str, Any] | None:
     """A model's cached check results (``None``: none, or a file of another kind that ``claim`` let
-    through with ``force``): its digest checked, its rows of the fields the report reads."""
+    through with ``force``): its digest checked, its rows of the fields the report reads (a row's
+    lemma one of the paper's or a registered one)."""
     if not cache.is_file() or not is_output(cache, Kind.CHECK):
         return None
     where = cache.as_posix()
@@ -131,7 +133,7 @@ def read_check_cache(cache: Path) -> dict[str, Any] | None:
     window = data.get("window")
     if not (isinstance(window, list) and len(window) == 2 and all(type(v) is int for v in window)):
         raise InvalidInput(f"{where}: window={str(window)[:40]!r}: expected [width, height]")
-    names = {lemma.value for lemma in CHECKED}
+    names = {lemma.value for lemma in CHECKED} | {lemma.name for lemma in registered()}  # a plug-in's too
     for k, row in enumerate(lemmas):
         at = f"{where}: lemmas[{k}]"
         if not isinstance(row, dict):

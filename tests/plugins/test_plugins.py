@@ -7,7 +7,7 @@ import json
 import os
 import subprocess
 import sys
-from collections.abc import Iterator
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -33,21 +33,10 @@ def fatline(*argv: str, cwd: Path | None = None) -> subprocess.CompletedProcess[
 
 
 @pytest.fixture
-def installed(monkeypatch: pytest.MonkeyPatch) -> Iterator[None]:
-    """The plug-in package installed for one test: its entry points loaded, and afterwards the
-    registries and modules as they were (no other test sees the toy rule set or lemma)."""
-    from fatline_verify.lemmas import registry as lemmas
-
-    lemmas.registered()  # the package's own, loaded before the snapshot
-    rules_before, lemmas_before = dict(registry._REGISTRY), dict(lemmas._REGISTRY)
-    monkeypatch.syspath_prepend(str(SITE))
-    registry.load_plugins()
-    yield
-    for reg, before in ((registry._REGISTRY, rules_before), (lemmas._REGISTRY, lemmas_before)):
-        reg.clear()
-        reg.update(before)
-    for name in [m for m in sys.modules if m.split(".")[0] == "toy_fatline_plugin"]:
-        del sys.modules[name]
+def installed(install_site: Callable[[Path], None]) -> None:
+    """The plug-in package installed for one test (tests/plugins/conftest.py: no other test sees the
+    toy rule set, lemma or scheduler)."""
+    install_site(SITE)
 
 
 @pytest.fixture
