@@ -236,16 +236,30 @@ def test_expand_keys_over_a_whole_state_space():
 
 
 # --- errors ---------------------------------------------------------------------------------------
-def test_off_lattice_decisions_are_refused():
+def test_off_lattice_decisions_hand_the_search_to_the_scalar_engine():
+    """The packed engines refuse a rational destination (they pack lattice moves); the checker then searches
+    that robot count with the scalar engine, and every engine asked gives the scalar engine's verdicts."""
+    from fatline_verify.check.checker import CheckPlan, check_robots
+    from fatline_verify.check.offlattice import OffLattice
+
     def half(snapshot, model):
+        if not any(x >= 3 for x, _ in snapshot):
+            return Decision(Rule.ALONE, (0, 0), ((0, 0),), ())
         return Decision(Rule.SCENARIO_1, (Fraction(1, 2), 0), ((0, 0), (Fraction(1, 2), 0)), ())
 
     model = replace(make_model(), algorithm=half)
     states = initial_array(2, (5, 5), model)
-    with pytest.raises(ValueError, match="off the lattice"):
+    with pytest.raises(OffLattice, match="off the lattice: the fast engine packs lattice moves only"):
         FastEngine(system_for(model)).expand(states)
-    with pytest.raises(ValueError, match="off the lattice"):
+    with pytest.raises(OffLattice, match="off the lattice: the compiled engine packs lattice moves only"):
         CompiledEngine(system_for(model)).expand(states)
+    got = {}
+    for engine in ("scalar", "fast", "compiled"):
+        stats, results = check_robots(CheckPlan.of(model, robots=(2, 2), window=(5, 5), engine=engine), 2)
+        assert stats.engine == "scalar" and stats.asked == ("" if engine == "scalar" else engine)
+        assert stats.off_lattice > 0
+        got[engine] = [(r.lemma, r.verdict, r.reason) for r in results]
+    assert got["scalar"] == got["fast"] == got["compiled"]
 
 
 def test_offsets_beyond_the_pair_packing_are_refused():

@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from conftest import make_model  # tests/ is on sys.path under both `pytest` and `python -m pytest`
+from tests.conftest import make_model
 
 from fatline_verify.docs import main as docs_main
 from fatline_verify.model.config import Model

@@ -20,13 +20,14 @@ from typing import Any
 import numpy as np
 
 from ..errors import InvalidInput
-from ..lemmas.properties import CHECKED, Lemma, LemmaResult, Verdict
+from ..lemmas.properties import Lemma, LemmaResult, Verdict
 from ..lemmas.registry import StepLemma, registered
 from ..model.config import Model
 from ..model.lattice import KeyCodec, RankedCodec
 from ..model.numbers import format_number
 from ..outputs import Kind, child
 from ..resources import default_max_memory, format_size
+from ..rules.registry import applies as rule_lemmas
 from ..schedulers.base import ENGINES, unknown_engine
 from ..schedulers.systems import system_for
 from . import keys as keyset
@@ -452,7 +453,7 @@ def witness_path(directory: Path, prefix: str, lemma: Lemma | StepLemma, robots:
 
 def witness_paths(plan: CheckPlan, directory: Path, prefix: str) -> list[Path]:
     """Every file a check of ``plan`` may write into ``directory`` (checked before the run)."""
-    lemmas: tuple[Lemma | StepLemma, ...] = (*CHECKED, *registered())
+    lemmas: tuple[Lemma | StepLemma, ...] = (*rule_lemmas(plan.model), *registered())
     return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in lemmas]
 
 

@@ -216,8 +216,9 @@ class Exploration:
         flags, fits, exact)`` in (source id, action) order; ``dst`` is -1 where the search does not follow
         the transition (outside the bound, violating under ``after_violation="stop"``) or beyond a limit."""
         ids = np.asarray(ids, dtype=np.int64)
-        tr = self._expander().transitions(np.asarray(self.keys[ids]), ids)
-        follow = np.flatnonzero(followed(tr.fits, tr.flags, self.after_violation))
+        expander = self._expander()
+        tr = expander.transitions(np.asarray(self.keys[ids]), ids)
+        follow = np.flatnonzero(followed(tr.fits, tr.flags, self.after_violation, expander.prune))
         id_type = np.int32 if self.n_states < 2**31 - 1 else np.int64
         dst = np.full(len(tr.src), -1, dtype=id_type)
         dst[follow] = self.ids_of(tr.key)

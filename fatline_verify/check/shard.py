@@ -20,6 +20,7 @@ import numpy as np
 from ..lemmas.registry import CORE_FLAGS, FLAG_BITS, extra_flags, registered
 from ..model.config import Model
 from ..resources import return_freed_memory
+from ..rules.registry import lemma_flags
 from ..schedulers.base import Engine, TransitionSystem, expand_keys
 from ..schedulers.systems import system_for
 from . import keys as keyset
@@ -59,7 +60,7 @@ def empty_summary() -> np.ndarray:
 
 
 def summarise(src: np.ndarray, action: np.ndarray, flags: np.ndarray, fits: np.ndarray, exact: np.ndarray,
-              after_violation: str) -> np.ndarray:  # fmt: skip
+              after_violation: str, prune: int = CORE_FLAGS) -> np.ndarray:  # fmt: skip
     """The summary of transitions in (source id, action) order: their counts (as :data:`SUMMARY_COUNTS`)
     and, per flag bit, the least ``(source id, action)`` whose flags have that bit (``-1, -1``: none).
 
@@ -67,7 +68,7 @@ def summarise(src: np.ndarray, action: np.ndarray, flags: np.ndarray, fits: np.n
     (under ``after_violation="stop"`` no followed transition is violating, so their destinations are
     not reached through them)."""
     out = empty_summary()
-    core = fits & ((flags & CORE_FLAGS) != 0)
+    core = fits & ((flags & prune) != 0)
     out[:4] = (
         len(src),
         int((~fits).sum()),
@@ -164,6 +165,10 @@ class Shard:
         self.frontier_ids = np.zeros(0, dtype=np.int64)
         self.lemmas = registered()
         """Registered step lemmas: judged on every transition, by one numpy pass over its positions."""
+        judged, self.prune = lemma_flags(self.system.model)
+        self.keep = judged | ~CORE_FLAGS
+        """The flag bits kept from the engine: the rule set's applicable built-in step lemmas and every
+        registered lemma's (a built-in lemma the rule set does not claim is neither judged nor pruned)."""
 
     def seed(self, visited: np.ndarray, frontier: np.ndarray | None, frontier_ids: np.ndarray) -> int:
         """Start (or resume) with these owned keys: ``visited`` sorted (kept as :attr:`base`, not copied),
@@ -197,11 +202,11 @@ class Shard:
             got = ids[start : start + batch]
             ex = expand_keys(self.system, self.engine, self.codec, np.asarray(part))
             src = got[ex.src]
-            flags = ex.flags
+            flags = ex.flags & self.keep
             if self.lemmas:
                 flags = flags | self._lemma_flags(np.asarray(part), ex.src, ex.action)
             flags = flags.astype(np.uint8)
-            follow = followed(ex.fits, flags, self.after_violation)
+            follow = followed(ex.fits, flags, self.after_violation, self.prune)
             col = {
                 "src": src.astype(np.int32) if len(src) and src[-1] < 2**31 - 1 else src,
                 "action": ex.action.astype(np.int32),
@@ -212,7 +217,7 @@ class Shard:
             }
             enabled, goal = ex.enabled.astype(enabled_dtype(self.codec.n)), ex.goal
             del ex
-            _in_action_order(col, self.after_violation)
+            _in_action_order(col, self.after_violation, self.prune)
             yield Transitions(np.asarray(got), enabled, goal, **col)
             if progress:
                 progress(min(start + batch, len(keys)), len(keys))
@@ -245,8 +250,10 @@ class Shard:
             enabled[done : done + len(tr.ids)] = tr.enabled
             goal[done : done + len(tr.ids)] = tr.goal
             done += len(tr.ids)
-            summaries.append(summarise(tr.src, tr.action, tr.flags, tr.fits, tr.exact, self.after_violation))
-            follow = followed(tr.fits, tr.flags, self.after_violation)
+            summaries.append(
+                summarise(tr.src, tr.action, tr.flags, tr.fits, tr.exact, self.after_violation, self.prune)
+            )
+            follow = followed(tr.fits, tr.flags, self.after_violation, self.prune)
             # A key's first occurrence is its least (source, action): batches ascend, so do their firsts.
             bk, first = keyset.unique_first(tr.key)
             unseen = self._unseen(bk)
@@ -345,7 +352,7 @@ COLUMNS = ("enabled", "goal", "summary")
 """A :class:`Level`'s columns kept by the search, in order (the checkpoint files hold the same)."""
 
 
-def _in_action_order(col: dict[str, np.ndarray], after_violation: str) -> None:
+def _in_action_order(col: dict[str, np.ndarray], after_violation: str, prune: int = CORE_FLAGS) -> None:
     """Put a level's transitions in (source id, action) order where an engine generated them otherwise
     (the ASYNC engines list a robot's stop after its move), so the first transition reaching a key is
     its least and the edge columns are ordered the same for every engine."""
@@ -353,7 +360,7 @@ def _in_action_order(col: dict[str, np.ndarray], after_violation: str) -> None:
     if not len(src) or ((src[1:] != src[:-1]) | (action[1:] > action[:-1])).all():
         return
     order = np.lexsort((action, src))
-    follow = followed(col["fits"], col["flags"], after_violation)
+    follow = followed(col["fits"], col["flags"], after_violation, prune)
     full = np.zeros(len(src), dtype=col["key"].dtype)
     full[follow] = col["key"]
     for name in ("src", "action", "flags", "fits", "exact"):
@@ -400,11 +407,12 @@ def _merged(visited: np.ndarray, new: np.ndarray) -> np.ndarray:
     return out
 
 
-def followed(fits: np.ndarray, flags: np.ndarray, after_violation: str) -> np.ndarray:
+def followed(fits: np.ndarray, flags: np.ndarray, after_violation: str, prune: int = CORE_FLAGS) -> np.ndarray:
     """The transitions the search follows: inside the bound and, unless ``after_violation`` is
-    ``"continue"``, violating none of the paper's step lemmas (a registered lemma never prunes:
+    ``"continue"``, violating none of the step lemmas of ``prune`` (the rule set's safety,
+    :func:`fatline_verify.rules.registry.lemma_flags`; a registered lemma never prunes:
     :mod:`fatline_verify.lemmas.registry`)."""
-    return fits if after_violation == "continue" else fits & ((flags & CORE_FLAGS) == 0)  # type: ignore[no-any-return]
+    return fits if after_violation == "continue" else fits & ((flags & prune) == 0)  # type: ignore[no-any-return]
 
 
 def _concat(parts: list[np.ndarray], dtype: object) -> np.ndarray:

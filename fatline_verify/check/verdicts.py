@@ -6,9 +6,10 @@ from typing import Any
 
 import numpy as np
 
-from ..lemmas.properties import CHECKED, SAFETY, Lemma, LemmaResult, StopReason, Verdict
+from ..lemmas.properties import SAFETY, Lemma, LemmaResult, StopReason, Verdict
 from ..lemmas.registry import StepLemma, registered
 from ..resources import format_size, machine_memory
+from ..rules.registry import applies as rule_lemmas
 from ..trace.traces import approach_stuck
 from .exploration import Exploration, Limit
 from .liveness import fair_cycles
@@ -68,7 +69,8 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
     out: dict[Any, LemmaResult] = {}
     expanded = ex.expanded
     extras = registered()
-    step: tuple[Lemma | StepLemma, ...] = (*SAFETY, *extras)
+    applies = rule_lemmas(ex.model)  # the rule set's own setting: a lemma it does not claim is not judged
+    step: tuple[Lemma | StepLemma, ...] = (*(lemma for lemma in SAFETY if lemma in applies), *extras)
     for lemma in step:
         first = ex.least_violating(lemma.flag)  # the search's summaries: the least (source, action)
         if first is not None:
@@ -79,22 +81,31 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
 
     terminal = expanded & (ex.enabled == 0)
     deadlocks = np.nonzero(terminal & ~ex.goal)[0]
+    if Lemma.PROGRESS in applies or Lemma.TERMINATION in applies:
+        out.update(_liveness(ex, expanded, deadlocks))
+    if Lemma.APPROACH in applies:
+        out[Lemma.APPROACH] = _approach(ex, terminal)
+    return [out[lemma] for lemma in (*applies, *extras)]
+
+
+def _liveness(ex: Exploration, expanded: np.ndarray, deadlocks: np.ndarray) -> dict[Lemma, LemmaResult]:
+    """Progress (a reachable deadlock) and termination (a deadlock, or a fair cycle that never reaches the goal)."""
+    out: dict[Lemma, LemmaResult] = {}
     if len(deadlocks):
         for lemma in (Lemma.PROGRESS, Lemma.TERMINATION):
             doc = state_witness(ex, int(deadlocks[0]), lemma)
             out[lemma] = _result(ex, lemma, Verdict.VIOLATED, "a deadlock: no robot enabled, no line", doc)
+        return out
+    out[Lemma.PROGRESS] = _bounded(ex, Lemma.PROGRESS, liveness=False)
+    lassos = fair_cycles(ex, expanded & ~ex.goal)
+    if lassos:
+        doc = lasso_witness(lasso_run(ex, lassos[0].start, lassos[0].cycle), ex, Lemma.TERMINATION)
+        out[Lemma.TERMINATION] = _result(
+            ex, Lemma.TERMINATION, Verdict.VIOLATED, "a fair cycle never forms the line", doc
+        )
     else:
-        out[Lemma.PROGRESS] = _bounded(ex, Lemma.PROGRESS, liveness=False)
-        lassos = fair_cycles(ex, expanded & ~ex.goal)
-        if lassos:
-            doc = lasso_witness(lasso_run(ex, lassos[0].start, lassos[0].cycle), ex, Lemma.TERMINATION)
-            out[Lemma.TERMINATION] = _result(
-                ex, Lemma.TERMINATION, Verdict.VIOLATED, "a fair cycle never forms the line", doc
-            )
-        else:
-            out[Lemma.TERMINATION] = _bounded(ex, Lemma.TERMINATION, liveness=True)
-    out[Lemma.APPROACH] = _approach(ex, terminal)
-    return [out[lemma] for lemma in (*CHECKED, *extras)]
+        out[Lemma.TERMINATION] = _bounded(ex, Lemma.TERMINATION, liveness=True)
+    return out
 
 
 def _approach(ex: Exploration, terminal: np.ndarray) -> LemmaResult:

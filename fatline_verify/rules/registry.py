@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..errors import InvalidModel
+from ..lemmas.properties import CHECKED, SAFETY, Lemma
 
 Model = Any
 """A :class:`fatline_verify.model.config.Model` (not imported: the model package imports this one)."""
@@ -151,6 +152,50 @@ class RuleSet:
     """What each rule label its decision function returns means (shown beside a deadlock's rules)."""
     liveness: Liveness | None = field(default=None, compare=False)
     """What the liveness obligations need (``None``: ``fatline prove`` has none for this rule set)."""
+    lemmas: tuple[str, ...] | None = None
+    """The checker's built-in lemmas that apply to this rule set, by name (``None``: all six, the paper's
+    setting). A rule set that does not claim Lemma 3, say, leaves ``rma-fixed`` (and ``approach``, which is
+    stated against the RMA) out: it is then neither judged nor reported, and its violations never stop a
+    search or a simulation. Registered step lemmas (:mod:`fatline_verify.lemmas.registry`) are judged
+    for every rule set, as before."""
+    safety: tuple[str, ...] | None = None
+    """The step lemmas whose violating steps the search does not follow (``None``: every applicable one:
+    ``no-collision``, ``connectivity``, ``rma-fixed``). A lemma left out is still judged, and its
+    violations found, but the search goes on past them, as ``--after-violation continue`` does for all."""
+
+    def applies(self) -> tuple[Lemma, ...]:
+        """The built-in lemmas judged for this rule set, in report order."""
+        if self.lemmas is None:
+            return CHECKED
+        return tuple(lemma for lemma in CHECKED if lemma.value in self.lemmas)
+
+    def prunes(self) -> tuple[Lemma, ...]:
+        """The step lemmas whose violating steps are not followed."""
+        step = tuple(lemma for lemma in self.applies() if lemma in SAFETY)
+        return step if self.safety is None else tuple(lemma for lemma in step if lemma.value in self.safety)
+
+    def check_setting(self) -> None:
+        """Refuse, in one line, a setting that names no lemma of the checker or prunes one that does not apply."""
+        known = {lemma.value for lemma in CHECKED}
+        for name, given in (("lemmas", self.lemmas), ("safety", self.safety)):
+            if given is None:
+                continue
+            if isinstance(given, str) or not all(isinstance(x, str) for x in given):
+                raise ValueError(f"rule set {self.name!r}: {name}={given!r}: expected a tuple of lemma names")
+            bad = sorted(set(given) - known)
+            if bad:
+                raise ValueError(
+                    f"rule set {self.name!r}: {name}={bad[0]!r}: not a lemma of the checker; expected some of "
+                    f"{', '.join(sorted(known))}"
+                )
+        if self.safety is not None:
+            step = {lemma.value for lemma in self.applies() if lemma in SAFETY}
+            extra = sorted(set(self.safety) - step)
+            if extra:
+                raise ValueError(
+                    f"rule set {self.name!r}: safety={extra[0]!r}: not one of its applicable step lemmas; expected "
+                    f"some of {', '.join(sorted(step)) or 'none'}"
+                )
 
     def accepts(self, option: str) -> bool:
         """Whether a model of this rule set may set ``option``."""
@@ -163,7 +208,9 @@ _loaded: set[str] = set()
 
 
 def register(rule_set: RuleSet) -> RuleSet:
-    """Add ``rule_set`` (once per name: registering another under a taken name is an error)."""
+    """Add ``rule_set`` (once per name: registering another under a taken name is an error; a setting
+    that names a lemma the checker does not have is one too, :meth:`RuleSet.check_setting`)."""
+    rule_set.check_setting()
     known = _REGISTRY.get(rule_set.name)
     if known is not None and known != rule_set:
         raise ValueError(f"rule set {rule_set.name!r} is registered twice")
@@ -226,6 +273,23 @@ def decide(snapshot: Sequence[Point], model: Model) -> Any:
     return of(model).decide(snapshot, model)
 
 
+def lemma_flags(model: Model) -> tuple[int, int]:
+    """``(judged, pruned)``: the violation bits of ``model``'s rule set's applicable step lemmas, and of those
+    whose violating steps the search does not follow (:meth:`RuleSet.prunes`)."""
+    rule_set = of(model)
+    judged = pruned = 0
+    for lemma in rule_set.applies():
+        judged |= lemma.flag
+    for lemma in rule_set.prunes():
+        pruned |= lemma.flag
+    return judged, pruned
+
+
+def applies(model: Model) -> tuple[Lemma, ...]:
+    """The built-in lemmas judged for ``model`` (its rule set's :meth:`RuleSet.applies`)."""
+    return of(model).applies()
+
+
 def decider(model: Model) -> Decide:
     """The decision function of ``model``, looked up once (engines call it per snapshot)."""
     return model.algorithm or of(model).decide
@@ -240,10 +304,12 @@ __all__ = [
     "Encoding",
     "Liveness",
     "RuleSet",
+    "applies",
     "decide",
     "decider",
     "encoding_of",
     "get",
+    "lemma_flags",
     "load_plugins",
     "names",
     "of",

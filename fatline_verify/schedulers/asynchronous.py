@@ -47,7 +47,7 @@ from ..model.swarm import State, is_goal
 from ..rules.paper.algorithm import Decision
 from ..rules.registry import decider
 from .base import Codec, Marks
-from .round import Violation, collisions, disconnection, global_path, rma_violations, snapshot
+from .round import Violation, claimed, collisions, disconnection, global_path, rma_violations, snapshot
 from .rounds import MAX_SCHEDULE_STEPS
 
 CORNER_NONE, CORNER_H, CORNER_V = 0, 1, 2
@@ -200,7 +200,7 @@ class AsyncSystem:
         if lost is not None:
             violations.append(lost)
         violations.extend(rma_violations(before, after))
-        return EventResult(action, state, target, before, after, {}, tuple(violations), swept)
+        return EventResult(action, state, target, before, after, {}, claimed(violations, self.model), swept)
 
     def successors(self, state: AsyncState) -> tuple[int, list[tuple[int, EventResult]]]:
         """The enabled robots (bitmask) and every offered event with its code and result."""

@@ -18,6 +18,7 @@ from ..model.geometry import Path, path_point_dist2, paths_any_speed_dist2, path
 from ..model.numbers import Number, Point
 from ..model.options import Contact, Timing
 from ..model.swarm import State, components, is_connected
+from ..rules import registry
 from ..rules.paper.algorithm import Decision
 from ..rules.registry import decider
 
@@ -145,6 +146,16 @@ def collisions(state: Sequence[Point], paths: dict[int, Path], model: Model) -> 
     return found
 
 
+def claimed(violations: Sequence[Violation], model: Model) -> tuple[Violation, ...]:
+    """The violations of lemmas ``model``'s rule set claims (:meth:`fatline_verify.rules.registry.RuleSet.applies`):
+    a step that breaks only a lemma it does not claim is no violation of it (it neither ends a simulation nor
+    stops a search)."""
+    if not violations:
+        return ()
+    applies = registry.applies(model)
+    return tuple(v for v in violations if v.lemma in applies)
+
+
 def rma_violations(before: Sequence[Point], after: Sequence[Point]) -> list[RmaMoved]:
     """Robots that crossed the right-most axis, or left it ("once on RMA, r cannot leave it")."""
     rma = max(p[0] for p in before)
@@ -197,4 +208,4 @@ def play_round(
     if lost is not None:
         violations.append(lost)
     violations.extend(rma_violations(state, after))
-    return RoundResult(act, chosen, state, after, tuple(violations))
+    return RoundResult(act, chosen, state, after, claimed(violations, model))

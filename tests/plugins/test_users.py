@@ -93,3 +93,43 @@ def test_a_rational_successor_is_never_rounded_onto_the_lattice() -> None:
     system = system_for(load_model("paper"))
     assert system.exact_array(((Fraction(1, 2), 0), (3, 0))) is None
     assert system.exact_array(((Fraction(4, 2), 0), (3, 0))).tolist() == [[2, 0], [3, 0]]
+
+
+def test_a_rule_set_of_its_own_setting_is_judged_by_its_own_lemmas_only(tmp_path: Path) -> None:
+    """step-left moves its right-most robot left: Lemma 3 fails for it, and it does not claim Lemma 3. Its
+    check judges the four lemmas it claims, and its runs go on past a step that moves the RMA; the same
+    rules under the paper's six lemmas stop there."""
+    check = fatline("check", str(SITE / "step-left.toml"), "--json", str(tmp_path / "own.json"))
+    assert check.returncode == 1, check.stderr
+    judged = {r["lemma"] for r in json.loads((tmp_path / "own.json").read_text())["lemmas"]}
+    assert judged == {"no-collision", "connectivity", "progress", "termination"}
+    paper = fatline("check", str(SITE / "step-left-paper.toml"), "--json", str(tmp_path / "paper.json"))
+    assert paper.returncode == 1, paper.stderr
+    rows = json.loads((tmp_path / "paper.json").read_text())["lemmas"]
+    assert {r["lemma"] for r in rows} == set(LEMMA_ROWS)
+    assert any(r["lemma"] == "rma-fixed" and r["verdict"] == "VIOLATED" for r in rows)
+    # its own: the rma-fixed violations are followed (more states than under the paper's setting)
+    own_states = sum(s["states"] for s in json.loads((tmp_path / "own.json").read_text())["searches"])
+    paper_states = sum(s["states"] for s in json.loads((tmp_path / "paper.json").read_text())["searches"])
+    assert own_states > paper_states, (own_states, paper_states)
+    run = ("--init", "0,0 4,0 8,0", "--schedule", "2;1;2")
+    own = fatline("simulate", str(SITE / "step-left.toml"), *run)
+    assert "outcome after 3 rounds" in own.stdout and "rma-fixed" not in own.stdout
+    stopped = fatline("simulate", str(SITE / "step-left-paper.toml"), *run)
+    assert "outcome after 1 round: stopped at a violation" in stopped.stdout and "rma-fixed" in stopped.stdout
+
+
+def test_a_setting_that_names_no_lemma_of_the_checker_is_refused_in_one_line() -> None:
+    import pytest
+
+    from fatline_verify.rules.registry import RuleSet
+
+    def stay(snapshot, model):  # pragma: no cover - never called
+        raise AssertionError
+
+    with pytest.raises(ValueError, match=r"lemmas='gathering': not a lemma of the checker; expected some of"):
+        RuleSet("x", stay, "x", lemmas=("no-collision", "gathering")).check_setting()
+    with pytest.raises(ValueError, match=r"safety='rma-fixed': not one of its applicable step lemmas"):
+        RuleSet("x", stay, "x", lemmas=("no-collision",), safety=("rma-fixed",)).check_setting()
+    with pytest.raises(ValueError, match=r"lemmas='no-collision': expected a tuple of lemma names"):
+        RuleSet("x", stay, "x", lemmas="no-collision").check_setting()  # type: ignore[arg-type]

@@ -65,3 +65,19 @@ def half_step(snapshot, model):
 
 
 register(RuleSet("half-step", half_step, "Half a radius right when the way is clear (off the lattice q = 1)."))
+
+
+def step_left(snapshot, model):
+    """One radius left when a robot is seen at least 3 radii left and nothing comes within 2 of the path."""
+    rho = model.radius
+    clear = all((x - min(max(x, -rho), 0)) ** 2 + y * y >= 4 * rho * rho for x, y in snapshot)
+    if clear and any(x <= -3 * rho for x, _ in snapshot):
+        return Decision("left", (-rho, 0), ((0, 0), (-rho, 0)), ())
+    return Decision("wait", (0, 0), ((0, 0),), ())
+
+
+OWN_SETTING = ("no-collision", "connectivity", "progress", "termination")
+"""Lemmas step-left claims: Lemma 3 (the right-most axis stays) is not one of them; its moves shift that axis."""
+
+register(RuleSet("step-left", step_left, "One radius left toward a robot 3 radii left.", lemmas=OWN_SETTING))
+register(RuleSet("step-left-paper", step_left, "step-left judged by the paper's six lemmas."))
