@@ -13,7 +13,6 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from tests.conftest import make_model
 
 from fatline_verify.docs import main as docs_main
 from fatline_verify.model.config import Model
@@ -42,6 +41,7 @@ from fatline_verify.text import (
 )
 from fatline_verify.trace.simulate import Outcome, Run, simulate
 from fatline_verify.trace.traces import run_to_json
+from tests.conftest import make_model
 
 ROOT = Path(__file__).resolve().parent.parent
 LONG_DIGITS = re.compile(r"\d{20,}")
