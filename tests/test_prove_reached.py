@@ -120,6 +120,15 @@ def test_known_refuses_what_it_cannot_use_in_one_line_before_any_work(tmp_path, 
     tampered.write_text(json.dumps(doc))
     err = _refused([*base, str(tampered)], capsys)
     assert "does not replay under model paper" in err and "tampered.json" in err
+    doc = load_trace(goal)
+    doc.update(initial=[[0, 0], [0, 2]], outcome="deadlock")  # discs touching: closer than delta
+    crowded = tmp_path / "crowded.json"
+    crowded.write_text(json.dumps(doc))
+    err = _refused([*base, str(crowded)], capsys)
+    assert "its first configuration is not initial" in err and "closer than delta" in err
+    # a deadlock where the model has no enabledness row: the repaired rule set declares no liveness
+    repaired = ["prove", "repaired", "--out", str(out), "-q", "--known", str(other)]
+    assert "a deadlock, but model repaired has no enabledness obligation" in _refused(repaired, capsys)
     assert not out.exists()  # refused before any work
 
 

@@ -154,7 +154,8 @@ def deadlock_problem(model: Model, run: Run) -> str:
     if not named_cases(model, final, decide_all(final, model)):
         return (
             f"no robot of the left-most vertical that sees a robot right of it decides one of rule set "
-            f"{model.rules!r}'s declared cases there"
+            f"{model.rules!r}'s declared cases there (the declaration does not cover that decision, so no "
+            "enabledness row can take it)"
         )
     return ""
 

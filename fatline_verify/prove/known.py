@@ -75,7 +75,11 @@ def read_known(model: Model, name: str, tasks: Sequence[Any]) -> KnownTrace:
             got = f"a deadlock, but model {model.name} has no enabledness obligation for it to decide"
         else:
             got = f"outcome {outcome!r}"
-        expected = f"{kinds}, which obligations of model {model.name} decide" if kinds else "another model"
+        expected = (
+            f"{kinds}, which obligations of model {model.name} decide"
+            if kinds
+            else f"no trace: no obligation of model {model.name} takes one"
+        )
         raise InvalidTrace(f"{where}: {got}; expected {expected}")
     try:
         start = initial_positions(doc, model)
