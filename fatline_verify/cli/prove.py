@@ -62,7 +62,8 @@ def cmd_prove(args: argparse.Namespace) -> int:
     tasks = tasks_for(
         model, lemmas, two_movers=args.two_movers
     )  # refuses a scheduler the obligations do not encode, before any work
-    known = [read_known(model, name, tasks_for(model)) for name in args.known]  # one a run cannot use: exit 2
+    every = tasks_for(model) if args.known else []  # what a trace may decide, whatever --lemma this run asks for
+    known = [read_known(model, name, every) for name in args.known]  # one no obligation can use: exit 2
     given = [(k.name, k.radii) for k in known if k.deadlock is None]
     deadlocks = [k.deadlock for k in known if k.deadlock is not None]
     root = claim_dir(args.out, name="out")
