@@ -12,7 +12,6 @@ from ..lemmas.properties import PROVED_LEMMAS, Lemma
 from ..outputs import Kind, child, claim_dir, claim_file, claim_files, write_json
 from ..progress import Progress
 from ..text import prove_lines
-from ..trace.traces import initial_radii, load_trace
 from .common import (
     EXIT_FOUND,
     EXIT_INCONCLUSIVE,
@@ -51,11 +50,11 @@ def cmd_prove(args: argparse.Namespace) -> int:
         from ..errors import InvalidInput
 
         raise InvalidInput(f"q={args.q}: --q sets the lattice of the --with obligations; expected --with")
+    from ..prove.known import read_known, unused_line
     from ..prove.prover import LEMMAS, prove, task_key, tasks_for
     from ..prove.results import ProofResults
 
     model = model_arg(args.model)
-    given = [(name, initial_radii(load_trace(name))) for name in args.known]  # a bad file: exit 2, before any work
     if args.lemma == LIVENESS:
         lemmas: tuple[Lemma, ...] = (Lemma.PROGRESS, Lemma.TERMINATION)
     else:
@@ -63,6 +62,10 @@ def cmd_prove(args: argparse.Namespace) -> int:
     tasks = tasks_for(
         model, lemmas, two_movers=args.two_movers
     )  # refuses a scheduler the obligations do not encode, before any work
+    every = tasks_for(model) if args.known else []  # what a trace may decide, whatever --lemma this run asks for
+    known = [read_known(model, name, every) for name in args.known]  # one no obligation can use: exit 2
+    given = [(k.name, k.radii) for k in known if k.deadlock is None]
+    deadlocks = [k.deadlock for k in known if k.deadlock is not None]
     root = claim_dir(args.out, name="out")
     out = claim_dir(child(root, model.name), name="out")
     traces_dir = claim_dir(args.traces, name="traces") if args.traces is not None else out / "traces"
@@ -103,12 +106,15 @@ def cmd_prove(args: argparse.Namespace) -> int:
                 given=given,
                 on_start=begun,
                 corpus=not args.no_corpus,
+                deadlocks=deadlocks,
             )
         except KeyboardInterrupt:
             interrupted = True
     keys = [task_key(t) for t in tasks if store.fresh(t) is not None]
     rows = store.ordered(keys)
     lines = prove_lines(model, rows, out, verbose=args.verbose)
+    if not interrupted:  # every trace given is used by a row, or said not to be
+        lines += [line for k in known if (line := unused_line(k, tasks, rows))]
     if interrupted:
         lines.append(f"INTERRUPTED: {len(rows)} of {len(tasks)} obligations finished and saved in {store.path}")
     emit(lines)  # the verdicts before the --json file: a full disk does not hide them
@@ -193,9 +199,12 @@ def register(sub: Any) -> None:
         action="extend",
         default=[],
         metavar="TRACE",
-        help="counterexamples found elsewhere (by hand: fatline simulate --trace): each trace's initial "
-        "configuration is replayed against every obligation before any search, every robot tried as r; one "
-        "that decides the case and breaks the claim is VIOLATED, its source named",
+        help="counterexamples found elsewhere (fatline simulate --trace, fatline check --traces), each replayed by "
+        "this model first: a violation's initial configuration is replayed against every per-case obligation "
+        "before any search, every robot tried as r (one that decides the case and breaks the claim is VIOLATED, "
+        "its source named); a deadlock (connected, not a line, reached after any number of rounds) VIOLATES the "
+        "enabledness row of the case its stuck left-most robot decides, and so progress and termination. A trace "
+        "of another rule set, of another outcome, or that does not replay is refused; one no row used is named",
     )
     p.add_argument(
         "--with",

@@ -1,14 +1,18 @@
 """``fatline prove`` on the liveness obligations (:mod:`fatline_verify.prove.smt.liveness`): Lemma 2's
 enabledness per decision case (r stays), and the rule set's ranking measure per moving case.
 
-- **enabled** (over the reals): ``unsat`` is PROVED for swarms of every size (the header's
-  argument). Otherwise the small swarms (the paper's rules: every initial configuration of a few
-  robots, fewest first, by the executable model alone), then the model's lattice with the initial
-  condition's pairs are searched; each solution is replayed by the executable model, and only a
-  configuration in which *no* robot moves, which is not a goal and meets the initial condition is a
+- **enabled**: first the deadlocks given with ``fatline prove --known`` (:mod:`fatline_verify.prove.known`):
+  one whose named robot decides the case is a counterexample, however many rounds it took to reach
+  (VIOLATED, its trace the row's witness). Then over the reals: ``unsat`` is PROVED for swarms of
+  every size (the header's argument). Otherwise the small swarms (the paper's rules: every initial
+  configuration of a few robots, fewest first, by the executable model alone; stuck ones first, then
+  deadlocks reached from them: :func:`reach`), then the model's lattice with the
+  initial condition's pairs are searched; each solution is replayed by the executable model, and only
+  a configuration in which *no* robot moves, which is not a goal and meets the initial condition is a
   counterexample (VIOLATED: a stuck configuration, so Lemma 2 and termination fail). A solution
   where r stays but another robot moves is not one: it is blocked and the search goes on; what is
-  left is INCONCLUSIVE, saying so.
+  left is INCONCLUSIVE, saying so (a stuck configuration the solver finds that is not initial is not
+  known to be reachable: no counterexample either).
 - **measure** (on the model's lattice): ``unsat`` is PROVED for every configuration of the lattice,
   of any size. A solution is replayed: r must make the case's move there; the round (r alone, or
   under ``fsync`` every robot that moves) must leave the measure where it was or raise it. From an
@@ -32,6 +36,9 @@ from ..model.swarm import initial_problems, is_goal
 from ..rules import registry
 from ..rules.paper.algorithm import Decision
 from ..schedulers.round import decide_all
+from ..trace.simulate import Outcome, Run
+from .corpus import GIVEN, SEARCH
+from .deadlock import Deadlock, deadlock_of, named_cases
 from .search import Budget
 from .smt.cases import Arith
 from .smt.live_rules import LiveCase, live_cases
@@ -46,8 +53,12 @@ MAX_TRIES = 12
 Positions = dict[str, tuple[Fraction, Fraction]]
 
 
-def prove_live(model: Model, spec: LiveSpec, *, timeout: float, out: Path | None) -> ProofResult:
-    """Decide one liveness obligation; write its SMT-LIB2 form (with its argument) under ``out``."""
+def prove_live(
+    model: Model, spec: LiveSpec, *, timeout: float, out: Path | None, given: Sequence[Deadlock] = ()
+) -> ProofResult:
+    """Decide one liveness obligation; write its SMT-LIB2 form (with its argument) under ``out``.
+    ``given``: deadlocks handed in (``fatline prove --known``), replayed already; an enabledness row is
+    VIOLATED by the first whose named robot decides its case, before any search."""
     from .smt.solving import block, check, solver_for, write
 
     case = _case(model, spec)
@@ -65,15 +76,23 @@ def prove_live(model: Model, spec: LiveSpec, *, timeout: float, out: Path | None
     named = len([n for n in full.bodies if not n.endswith("'")]) - 1
 
     def result(
-        verdict: Verdict, reason: str, doc: dict[str, Any] | None = None, config: Sequence[str] = ()
+        verdict: Verdict,
+        reason: str,
+        doc: dict[str, Any] | None = None,
+        config: Sequence[str] = (),
+        decided_by: str = SEARCH,
     ) -> ProofResult:
         return ProofResult(
             spec.lemma, spec.form, "any", verdict, named, True, spend.wall, reason, path, doc, full.comment,
-            spec.case, "", tuple(config),
+            spec.case, "", tuple(config), decided_by,
         )  # fmt: skip
 
     if enabled and goal_problem(model):
         return result(Verdict.INCONCLUSIVE, goal_problem(model))
+    for deadlock in given if enabled else ():
+        if spec.case in deadlock.cases:
+            reason = deadlock.reason(model, spec.case)
+            return result(Verdict.VIOLATED, reason, deadlock.doc, deadlock.configuration(model, spec.case), GIVEN)
     if not enabled and model.options.motion is not Motion.RIGID:
         return result(
             Verdict.INCONCLUSIVE,
@@ -121,7 +140,10 @@ def prove_live(model: Model, spec: LiveSpec, *, timeout: float, out: Path | None
         from .small import SMALL
 
         most = _small_most(SMALL, q)
-        searched += f"; no stuck configuration of 2 to {most} robots at q={q} (small swarms) has r in this case"
+        searched += (
+            f"; no stuck configuration of 2 to {most} robots at q={q} (small swarms), nor a deadlock reached from one "
+            f"({REACH_SCHEDULE}), has r in this case"
+        )
     if seen is None and first.status != "sat":
         return result(
             Verdict.INCONCLUSIVE,
@@ -140,32 +162,74 @@ def _small_most(small: Sequence[tuple[int, int, tuple[int, int]]], q: int) -> in
     return max((n for qq, n, _ in small if qq == q), default=1)
 
 
+REACH_ROUNDS = 20
+"""Rounds the small swarms' runs are played for, looking for a reachable deadlock (:func:`reach`).
+Measured on ``paper`` (q = 1, 2 to 4 robots, 9x9, this machine): about 3 s for all of them (most runs
+end in a collision within a few rounds); it runs only when no stuck initial configuration decides the
+row."""
+
+REACH_SCHEDULE = f"every enabled robot moving each round (one under centralized), at most {REACH_ROUNDS} rounds"
+"""How a reason names the schedule of :func:`reach`."""
+
+
+def reach(model: Model, initial: tuple[Point, ...], rounds: int = REACH_ROUNDS) -> Run | None:
+    """The run from ``initial`` in which every enabled robot moves each round (a round of every
+    scheduler the obligations encode; under ``centralized`` the first enabled robot alone), if it ends
+    in a deadlock after one round or more and within ``rounds``; ``None`` if it reaches a goal, a
+    violation, or neither within ``rounds``."""
+    from ..schedulers.round import play_round
+
+    one = model.options.scheduler is Scheduler.CENTRALIZED
+    state = initial
+    steps: list[Any] = []
+    for _ in range(rounds + 1):
+        if is_goal(state, model):
+            return None
+        decisions = decide_all(state, model)
+        movers = [i for i, d in decisions.items() if d.moves]
+        if not movers:
+            return Run(model, initial, tuple(steps), Outcome.DEADLOCK) if steps else None
+        if len(steps) == rounds:
+            return None
+        step = play_round(state, movers[:1] if one else movers, model, decisions)
+        if step.violations:
+            return None
+        steps.append(step)
+        state = step.after
+    return None
+
+
 def small_stuck(model: Model, spec: LiveSpec) -> tuple[Verdict, str, dict[str, Any] | None, tuple[str, ...]] | None:
-    """A stuck configuration among the small swarms of :mod:`fatline_verify.prove.small` on the model's
-    own lattice (every initial configuration of a few robots, by the executable model alone) in
-    which a robot of the left-most vertical that sees a robot right of it decides this case (the
-    paper's rules: :func:`fatline_verify.rules.paper.cases.case_of` names it), replayed."""
-    from ..rules.paper.cases import case_of
+    """A deadlock among the small swarms of :mod:`fatline_verify.prove.small` on the model's own lattice
+    (every initial configuration of a few robots, by the executable model alone) in which a robot of the
+    left-most vertical that sees a robot right of it decides this case (the paper's rules:
+    :func:`fatline_verify.rules.paper.cases.case_of` names it), replayed: a stuck initial configuration
+    first; then a deadlock reached from one (:func:`reach`)."""
     from .small import _swarms
 
     q = model.parameters.q
-    for at, _, state in _swarms(model):
-        if at != q:
-            continue
+    swarms = [state for at, _, state in _swarms(model) if at == q]
+    for state in swarms:
         decisions = decide_all(state, model)
         if any(d.moves for d in decisions.values()) or is_goal(state, model):
             continue
-        left = min(p[0] for p in state)
-        for i, p in enumerate(state):
-            if p[0] != left or case_of(decisions[i], model).name != spec.case:
-                continue
-            if not any(o[0] > p[0] and model.sees((o[0] - p[0]) ** 2 + (o[1] - p[1]) ** 2) for o in state):
-                continue
-            ordered = (p, *(o for o in state if o != p))
-            radii = {f"n{k}": model.from_lattice(o) for k, o in enumerate(ordered)}
-            got = replay_stuck(model, spec, radii)  # type: ignore[arg-type]
-            if got[0] is Verdict.VIOLATED:
-                return got[0], got[1] + " (found among the small swarms)", got[2], got[3]
+        i = named_cases(model, state, decisions).get(spec.case)
+        if i is None:
+            continue
+        ordered = (state[i], *(o for j, o in enumerate(state) if j != i))
+        radii = {f"n{k}": model.from_lattice(o) for k, o in enumerate(ordered)}
+        got = replay_stuck(model, spec, radii)  # type: ignore[arg-type]
+        if got[0] is Verdict.VIOLATED:
+            return got[0], got[1] + " (found among the small swarms)", got[2], got[3]
+    origin = {"tool": "fatline prove", "lemma": str(spec.lemma), "form": spec.form, "case": spec.case}
+    source = f"found among the small swarms, {REACH_SCHEDULE}"
+    for state in swarms:
+        run = reach(model, state)
+        if run is None or spec.case not in named_cases(model, run.final, decide_all(run.final, model)):
+            continue
+        found = deadlock_of(model, run, source, origin)
+        if found is not None:
+            return Verdict.VIOLATED, found.reason(model, spec.case), found.doc, found.configuration(model, spec.case)
     return None
 
 
@@ -306,4 +370,4 @@ def replay_measure(
     )
 
 
-__all__ = ["measure_of", "prove_live", "replay_measure", "replay_stuck"]
+__all__ = ["measure_of", "prove_live", "reach", "replay_measure", "replay_stuck", "small_stuck"]

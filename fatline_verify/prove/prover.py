@@ -33,6 +33,7 @@ from ..schedulers.activation import round_scheduler
 from ..schedulers.round import play_round
 from ..trace.simulate import Outcome, Run
 from ..trace.traces import replayed_document
+from .deadlock import Deadlock
 from .replay import Known, Replayed, replay, replay_known
 from .search import MIN_CHECK, Budget, Given, prove_spec, rounds, rounds_text
 from .smt import obligations as ob
@@ -177,6 +178,7 @@ def prove(
     given: Sequence[Given] = (),
     on_start: Callable[[str], None] | None = None,
     corpus: bool = True,
+    deadlocks: Sequence[Deadlock] = (),
 ) -> list[ProofResult]:
     """Every obligation of ``lemmas`` (or exactly ``tasks``) for ``model``; ``.smt2`` files under ``out``.
 
@@ -190,7 +192,8 @@ def prove(
     ``given``: configurations handed in (``--known``), replayed against every per-case obligation;
     ``on_start(key)``: an obligation's process has started (``progress(key)``: it has finished);
     ``corpus``: the shipped counterexample corpus (:mod:`fatline_verify.prove.corpus`) is replayed
-    first of all (``fatline prove --no-corpus``: not at all).
+    first of all (``fatline prove --no-corpus``: not at all); ``deadlocks``: replayed deadlocks handed in
+    (``--known``), each VIOLATING the enabledness rows of the cases its named robots decide.
     """
     tasks = tasks_for(model, lemmas) if tasks is None else tasks
     if not tasks:
@@ -206,7 +209,7 @@ def prove(
         if isinstance(task, LegSpec):
             calls.append((decided, (prove_leg, model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, LiveSpec):
-            calls.append((prove_live, (model, task), {"timeout": timeout, "out": out}))
+            calls.append((prove_live, (model, task), {"timeout": timeout, "out": out, "given": tuple(deadlocks)}))
         elif isinstance(task, Spec):
             note = PAPER_PART_NOTE if model.options.repaired else ""
             written = traces if traces is not None else out / "traces" if out else None
@@ -441,7 +444,11 @@ PROVED row of ``proofs/`` through them), and a VIOLATED row replays its own coun
 only an INCONCLUSIVE row can change, which ``--redo-inconclusive`` re-runs. Nor for the shipped
 counterexample corpus (:mod:`fatline_verify.prove.corpus`) and the rows' ``decided_by``: the corpus
 only adds candidates replayed first, each believed only if it replays, none of them beside a PROVED
-row (``tests/test_prove_corpus.py``), so again only an INCONCLUSIVE row can change."""
+row (``tests/test_prove_corpus.py``), so again only an INCONCLUSIVE row can change. Nor for deadlocks
+reached after some rounds (:mod:`fatline_verify.prove.deadlock`: given with ``--known``, or reached from
+the small swarms by :func:`fatline_verify.prove.live.reach`): a replayed one makes an enabledness row
+VIOLATED that no unsat can have PROVED (the deadlock's named robot is a solution of it), so again only
+an INCONCLUSIVE row can change."""
 
 
 __all__ = [

@@ -46,6 +46,7 @@ from ..model.config import Model
 from ..model.numbers import Point
 from ..outputs import write_text
 from .corpus import CORPUS, EARLIER, GIVEN
+from .known import given_source
 from .replay import Known, Replayed, replay, replay_known
 from .small import SMALL_TEXT, given_counterexample, small_swarm_counterexample
 from .smt.claims import (
@@ -465,9 +466,7 @@ def prove_spec(
     for where, radii in given:
         hit = given_counterexample(model, spec, radii)
         if hit is not None:
-            first = search.result(
-                Verdict.VIOLATED, _found(hit, f"given with --known {where}", how="replayed first"), hit
-            )
+            first = search.result(Verdict.VIOLATED, _found(hit, given_source(where), how="replayed first"), hit)
             return replace(first, decided_by=GIVEN)
     for budget in rounds(timeout):
         before = search.spent
