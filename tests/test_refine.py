@@ -253,3 +253,18 @@ def test_a_term_the_evaluator_does_not_know_is_refused_by_name(toys) -> None:
 
     with pytest.raises(refine.NotCompilable, match="operator"):
         refine._compile(model, [LiveCase("odd", (), False, odd)], 2)
+
+
+def test_fatline_cover_names_the_uncovered_view_and_exits_1(toys, tmp_path, capsys) -> None:
+    from fatline_verify.cli import main
+
+    for name, code in (("toy-far-no-stay", 1), ("toy-far", 0)):
+        path = tmp_path / f"{name}.toml"
+        path.write_text(
+            f'name = "{name}"\nrules = "{name}"\n[parameters]\nrad_v = 4\nq = 1\n[options]\nscheduler = "ssync"\n'
+        )
+        assert main(["cover", str(path), "--sample", "300"]) == code
+        out = capsys.readouterr().out
+        assert out.startswith(f"progress/coverage-cases: {'VIOLATED' if code else 'INCONCLUSIVE'}")
+        assert ("decide says stay" in out) == bool(code)
+    assert main(["cover", "repaired"]) == 2
