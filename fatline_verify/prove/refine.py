@@ -405,7 +405,7 @@ def _compile(model: Model, cases: Sequence[LiveCase], k: int) -> Checker:
         code.names.update({v: f"R{j}{v[-1]}" for v, j in reader.roles.items()})  # case n's roles, its own
         cs, dest = case.encode(ar, model, me, roles, universe)
         clauses = [c for e in cs for c in _clauses(reader.read(_as_z3(ar, e)))]
-        at = [((reader.read(_as_z3(ar, dest[i]) == want[i]), True),) for i in (0, 1)]
+        at: list[Clause] = [((reader.read(_as_z3(ar, dest[i]) == want[i]), True),) for i in (0, 1)]
         body += _search(code, n, clauses, at)
         calls += [f"    if C{n}():", f"        match.append({n})", f"    if held[{n}]:", f"        hold.append({n})"]
     lines += [f"    {line}" for line in code.prelude]
