@@ -269,3 +269,34 @@ def test_fatline_cover_names_the_uncovered_view_and_exits_1(toys, tmp_path, caps
         assert out.startswith(f"progress/coverage-cases: {'VIOLATED' if code else 'INCONCLUSIVE'}")
         assert ("decide says stay" in out) == bool(code)
     assert main(["cover", "repaired"]) == 2
+
+
+def test_the_paper_with_scenario_1_left_out_is_caught_on_its_views(paper) -> None:
+    """The paper's own decide and encoding, Scenario 1's case left out of the declaration: exactly
+    its views are uncovered, and no other case holds on them (the cases are disjoint there)."""
+    from fatline_verify.rules.paper.rule_set import PAPER
+
+    def without_s1(model):
+        return [c for c in live_cases(paper) if c.name != "scenario-1"]
+
+    before = dict(registry._REGISTRY)
+    assert PAPER.liveness is not None
+    registry.register(
+        registry.RuleSet(
+            "paper-no-s1", PAPER.decide, "the paper, Scenario 1 undeclared", options=PAPER.options,
+            liveness=registry.Liveness(without_s1, PAPER.liveness.measure, "", ""),
+        )
+    )  # fmt: skip
+    try:
+        model = model_from_mapping({"name": "paper-no-s1", "rules": "paper-no-s1", "parameters": {"rad_v": 4, "q": 1}})
+        views = [v for v in refine.random_views(paper, 2000, seed=5) if len(v) <= 4]  # few sizes to compile
+        s1 = [v for v in views if registry.decide(v, paper).rule == "scenario-1"][:8]
+        others = [v for v in views if registry.decide(v, paper).rule != "scenario-1"][:8]
+        assert len(s1) == 8 and len(others) == 8
+        got = refine.coverage(model, s1 + others)
+        assert got.views == 16 and got.covered == 8 and got.overlapping == 0
+        assert [s.view for s in got.uncovered_views] == s1[: refine.SHOWN]
+        assert all(s.rule == "scenario-1" and s.holding == () for s in got.uncovered_views)
+    finally:
+        registry._REGISTRY.clear()
+        registry._REGISTRY.update(before)

@@ -607,7 +607,7 @@ def coverage(model: Model, views: Iterable[View] | None = None, *, processes: in
     exhaustive = views is None
     listed = None if exhaustive else [tuple(v) for v in views]  # type: ignore[union-attr]
     _, get = checkers(model)  # every size compiled first (and before a fork: every process has them)
-    for k in range(1 + (largest_view(model) if listed is None else max(map(len, listed), default=0))):
+    for k in range(1 + largest_view(model)) if listed is None else sorted({len(v) for v in listed}):
         get(k)
     start = time.perf_counter()
     if processes > 1:
