@@ -339,7 +339,7 @@ class _Code:
         yet, and its test, its role-free literals (temporaries of the prelude) first."""
         block = _Scope([], scope.names, scope.counter)
         lits = sorted(clause, key=lambda lit: bool(lit[0].roles))
-        test = " or ".join(self._lit(t, pos, block) for t, pos in lits)
+        test = " or ".join(self._lit(t, pos, block) for t, pos in lits) or "False"  # no literal: false
         return block.lines, test
 
     def clause(self, clause: Clause, scope: _Scope) -> list[str]:
