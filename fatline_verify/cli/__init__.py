@@ -13,10 +13,10 @@ import sys
 from collections.abc import Sequence
 
 from ..errors import FatlineError
-from . import check, info, prove, reach, regress, replay, report, simulate, sweep, synth
+from . import check, cover, info, prove, reach, regress, replay, report, simulate, sweep, synth
 from .common import EXIT_BAD, EXIT_INTERRUPTED, EXIT_OK, ArgumentError, Parser, error_line
 
-COMMANDS = (info, check, prove, reach, synth, sweep, simulate, replay, regress, report)
+COMMANDS = (info, check, prove, cover, reach, synth, sweep, simulate, replay, regress, report)
 """Each command module registers its own subcommand(s); the order is the order of ``--help``."""
 
 DESCRIPTION = "Verify 'Line Formation by Fat Robots under Limited Visibility' (Sil & Gan Chaudhuri)."
