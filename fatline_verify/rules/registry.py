@@ -123,11 +123,42 @@ def _load(*, plugins: bool = True) -> None:
         load_plugins()
 
 
+@dataclass(frozen=True, slots=True)
+class Provider:
+    """The installed distribution whose entry point registered a plug-in (as ``importlib.metadata``
+    names it): what a trace records, and what replay asks for when the plug-in is missing."""
+
+    distribution: str
+    version: str
+
+    def __str__(self) -> str:
+        return f"{self.distribution} {self.version}"
+
+
+_PROVIDERS: dict[tuple[str, str], Provider] = {}
+"""``(kind, name) -> Provider`` for everything an entry point registered; kind is ``"rules"``,
+``"lemma"`` or ``"scheduler"``."""
+
+
+def _registered_names() -> set[tuple[str, str]]:
+    """Every registered ``(kind, name)``: rule sets, step lemmas and round schedulers."""
+    from ..lemmas import registry as lemmas
+    from ..schedulers.activation import ROUND_SCHEDULERS
+
+    return (
+        {("rules", n) for n in _REGISTRY}
+        | {("lemma", n) for n in lemmas._REGISTRY}
+        | {("scheduler", n) for n in ROUND_SCHEDULERS}
+    )
+
+
 def load_plugins() -> None:
-    """Import every ``fatline.plugins`` entry point (a module registers on import; a callable is called)."""
+    """Import every ``fatline.plugins`` entry point (a module registers on import; a callable is called),
+    and remember which distribution registered what (:func:`provider`)."""
     from importlib import metadata  # a twentieth of a second to import: only when plug-ins are asked for
 
     for ep in metadata.entry_points(group=GROUP):
+        before = _registered_names()
         try:
             obj = ep.load()
         except Exception as exc:  # a broken plug-in is named, not a traceback
@@ -135,6 +166,17 @@ def load_plugins() -> None:
             raise InvalidModel(f"plugin {ep.name}={ep.value!r}: cannot be loaded ({why})") from None
         if callable(obj):
             obj()
+        dist = ep.dist
+        found = Provider(dist.name, dist.version) if dist is not None else Provider(ep.value.split(".")[0], "")
+        for key in _registered_names() - before:
+            _PROVIDERS[key] = found
+
+
+def provider(kind: str, name: str) -> Provider | None:
+    """The installed distribution that registered the ``kind`` (``"rules"``, ``"lemma"``,
+    ``"scheduler"``) called ``name``; ``None`` for this package's own and for one registered in
+    process (a test's)."""
+    return _PROVIDERS.get((kind, name))
 
 
 def names() -> tuple[str, ...]:
@@ -177,6 +219,7 @@ __all__ = [
     "MODEL_OPTIONS",
     "Decide",
     "Liveness",
+    "Provider",
     "RuleSet",
     "decide",
     "decider",
@@ -184,5 +227,6 @@ __all__ = [
     "load_plugins",
     "names",
     "of",
+    "provider",
     "register",
 ]

@@ -9,6 +9,7 @@ import subprocess
 import sys
 from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -37,15 +38,17 @@ def installed(monkeypatch: pytest.MonkeyPatch) -> Iterator[None]:
     """The plug-in package installed for one test: its entry points loaded, and afterwards the
     registries and modules as they were (no other test sees the toy rule set or lemma)."""
     from fatline_verify.lemmas import registry as lemmas
+    from fatline_verify.schedulers.activation import ROUND_SCHEDULERS
 
     lemmas.registered()  # the package's own, loaded before the snapshot
-    rules_before, lemmas_before = dict(registry._REGISTRY), dict(lemmas._REGISTRY)
+    registries: list[dict[Any, Any]] = [registry._REGISTRY, lemmas._REGISTRY, ROUND_SCHEDULERS, registry._PROVIDERS]
+    before = [dict(reg) for reg in registries]
     monkeypatch.syspath_prepend(str(SITE))
     registry.load_plugins()
     yield
-    for reg, before in ((registry._REGISTRY, rules_before), (lemmas._REGISTRY, lemmas_before)):
+    for reg, was in zip(registries, before, strict=True):
         reg.clear()
-        reg.update(before)
+        reg.update(was)
     for name in [m for m in sys.modules if m.split(".")[0] == "toy_fatline_plugin"]:
         del sys.modules[name]
 
@@ -111,8 +114,9 @@ def test_check_runs_the_toy_and_every_engine_agrees(engine: str, tmp_path: Path)
     assert got.returncode == 1, got.stderr  # the toy deadlocks and splits the swarm
     data = json.loads(out.read_text())
     verdicts = {(r["lemma"], r["robots"]): (r["verdict"], r["witness_rounds"]) for r in data["lemmas"]}
-    assert {lemma for lemma, _ in verdicts} == {*LEMMAS, "no-left"}  # the plug-in's lemma too
+    assert {lemma for lemma, _ in verdicts} == {*LEMMAS, "no-left", "no-down"}  # the plug-in's lemmas too
     assert verdicts[("no-left", 3)][0] == "HOLDS_WITHIN_BOUNDS"  # the toy only steps right
+    assert verdicts[("no-down", 3)][0] == "HOLDS_WITHIN_BOUNDS"
     assert verdicts[("connectivity", 3)] == ("VIOLATED", 1)
     assert verdicts[("progress", 2)] == ("VIOLATED", 0)
     assert verdicts[("no-collision", 3)][0] == "HOLDS_WITHIN_BOUNDS"
@@ -259,9 +263,12 @@ def test_adding_a_lemma_changes_no_other_lemma_s_evidence(tmp_path: Path) -> Non
         runs[name] = (searches, rows, traces)
     (s0, r0, t0), (s1, r1, t1) = runs["without"], runs["with"]
     assert s0 == s1
-    assert {k: v for k, v in r1.items() if k[0] != "no-left"} == r0
+    assert {k: v for k, v in r1.items() if k[0] not in ("no-left", "no-down")} == r0
     assert {k for k in r1 if k[0] == "no-left"} == {("no-left", 2), ("no-left", 3)}
-    assert t0 == t1  # the paper's rules never move left: no new trace, and every old one byte-identical
+    # the paper's rules never move left, but do step down: the only new traces are no-down's, and every
+    # old one is byte-identical
+    assert {k: v for k, v in t1.items() if "no-down" not in k} == t0
+    assert sorted(k for k in t1 if "no-down" in k) == ["paper-no-down-n2.json", "paper-no-down-n3.json"]
 
 
 def test_the_committed_corpus_replays_with_the_lemma_installed() -> None:
@@ -357,3 +364,61 @@ def test_a_deadlock_of_the_toy_says_whom_each_robot_sees() -> None:
     got = fatline("simulate", str(MODEL), "--init", "0,0 4,0", "--rounds", "5")
     assert got.returncode == 1
     assert "r0: toy-stay (sees r1)" in got.stdout and "r1: toy-stay (sees r0)" in got.stdout
+
+
+# --- issue 39: a plug-in's lemma, scheduler and traces are first-class -------------------------------
+
+TOY_DIST = {"distribution": "toy-fatline-plugin", "version": "0.1"}
+"""What ``importlib.metadata`` says of the toy package (its ``.dist-info``)."""
+
+
+def without_plugin(*argv: str) -> subprocess.CompletedProcess[str]:
+    """The CLI in a fresh interpreter without the plug-in package."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    return subprocess.run(
+        [sys.executable, "-m", "fatline_verify.cli", *argv], capture_output=True, text=True, env=env, cwd=ROOT
+    )
+
+
+def test_a_violated_plug_in_lemma_s_witness_is_written_loaded_and_replayed(tmp_path: Path) -> None:
+    """The paper's robots step down: ``no-down`` is VIOLATED, its witness written (the trace schema takes
+    a registered lemma's name), records the package that provides the lemma, and replays."""
+    out, traces = tmp_path / "check.json", tmp_path / "t"
+    got = fatline("check", "paper", "--robots", "2", "--json", str(out), "--traces", str(traces), "-q", cwd=ROOT)
+    assert got.returncode == 1, got.stderr
+    row = next(r for r in json.loads(out.read_text())["lemmas"] if r["lemma"] == "no-down")
+    assert (row["verdict"], row["witness_rounds"]) == ("VIOLATED", 1)
+    trace = traces / "paper-no-down-n2.json"
+    assert row["trace"] == trace.as_posix()
+    doc = json.loads(trace.read_text())
+    assert doc["violation"]["property"] == "no-down" and doc["violation"]["robots"]
+    assert doc["plugins"] == [{"kind": "lemma", "name": "no-down", **TOY_DIST}]
+    rep = fatline("replay", str(trace))
+    assert rep.returncode == 0 and "reproduces" in rep.stdout and "no-down" in rep.stdout, rep.stdout + rep.stderr
+    # replay re-judges the lemma: a robot it did not break it for is a recorded value that differs
+    doc["violation"]["robots"] = [1 - doc["violation"]["robots"][0]]
+    tampered = tmp_path / "tampered.json"
+    tampered.write_text(json.dumps(doc))
+    bad = fatline("replay", str(tampered))
+    assert bad.returncode == 1 and "violation.robots" in bad.stdout + bad.stderr
+    # the traces of the paper's own lemmas need no plug-in and record none
+    assert all("plugins" not in json.loads(p.read_text()) for p in traces.glob("paper-[!n]*.json"))
+
+
+def test_without_the_package_replay_names_the_package_to_install(tmp_path: Path) -> None:
+    trace = tmp_path / "down.json"
+    assert fatline("check", "paper", "--robots", "2", "--traces", str(tmp_path), "-q", cwd=ROOT).returncode == 1
+    (tmp_path / "paper-no-down-n2.json").rename(trace)
+    got = without_plugin("replay", str(trace))
+    assert got.returncode == 2 and got.stdout == ""
+    assert got.stderr == (
+        f"fatline: error: {trace}: lemma 'no-down' is a plug-in that is not installed; expected its package "
+        "installed: pip install 'toy-fatline-plugin==0.1'\n"
+    )
+    # a trace of an unknown lemma that records no package: one line that lists the lemmas there are
+    doc = json.loads(trace.read_text())
+    del doc["plugins"]
+    trace.write_text(json.dumps(doc))
+    got = without_plugin("replay", str(trace))
+    assert got.returncode == 2 and got.stderr.count("\n") == 1
+    assert "violation.property='no-down': unknown lemma; expected one of connectivity, no-collision, " in got.stderr
