@@ -20,8 +20,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import InvalidInput
-from ..lemmas.properties import CHECKED, Lemma, LemmaResult, Verdict
-from ..lemmas.registry import StepLemma, registered
+from ..lemmas.properties import Lemma, LemmaResult, Verdict
+from ..lemmas.registry import StepLemma, checked, registered
 from ..model.config import Model
 from ..model.lattice import KeyCodec, RankedCodec
 from ..model.numbers import format_number
@@ -437,8 +437,7 @@ def witness_path(directory: Path, prefix: str, lemma: Lemma | StepLemma, robots:
 
 def witness_paths(plan: CheckPlan, directory: Path, prefix: str) -> list[Path]:
     """Every file a check of ``plan`` may write into ``directory`` (checked before the run)."""
-    lemmas: tuple[Lemma | StepLemma, ...] = (*CHECKED, *registered())
-    return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in lemmas]
+    return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in checked()]
 
 
 def write_witnesses(result: CheckResult, directory: Path, prefix: str) -> dict[tuple[str, int], str]:

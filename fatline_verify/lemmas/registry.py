@@ -94,6 +94,14 @@ def registered() -> tuple[StepLemma, ...]:
     return tuple(_REGISTRY.values())
 
 
+def checked() -> tuple[Any, ...]:
+    """Every lemma ``fatline check`` gives a verdict: the paper's (:data:`~.properties.CHECKED`, in
+    report order), then the registered step lemmas (plug-ins loaded)."""
+    from .properties import CHECKED
+
+    return (*CHECKED, *registered())
+
+
 def find(name: str) -> StepLemma | None:
     """The registered lemma called ``name``, if any."""
     return next((lemma for lemma in registered() if lemma.name == name), None)
@@ -110,4 +118,4 @@ def extra_flags(before: np.ndarray, after: np.ndarray, model: Any, lemmas: Seque
     return bits
 
 
-__all__ = ["CORE_FLAGS", "FLAG_BITS", "StepLemma", "extra_flags", "find", "register", "registered"]
+__all__ = ["CORE_FLAGS", "FLAG_BITS", "StepLemma", "checked", "extra_flags", "find", "register", "registered"]

@@ -422,3 +422,21 @@ def test_without_the_package_replay_names_the_package_to_install(tmp_path: Path)
     got = without_plugin("replay", str(trace))
     assert got.returncode == 2 and got.stderr.count("\n") == 1
     assert "violation.property='no-down': unknown lemma; expected one of connectivity, no-collision, " in got.stderr
+
+
+def test_a_second_report_reads_its_own_check_json_and_writes_the_same(tmp_path: Path) -> None:
+    """A model of a plug-in scheduler, with a plug-in lemma VIOLATED: the report works, and a second one
+    reuses its cached check.json (no recomputation: the trace files are not rewritten) with the same
+    output, byte for byte."""
+    out = tmp_path / "reports"
+    first = fatline("report", str(PAIRS), "--out", str(out))
+    assert first.returncode == 0, first.stderr
+    page = (out / "paper-pairs" / "README.md").read_text()
+    assert "| no-down | 2 | VIOLATED |" in page and "| no-left | 4 | HOLDS_WITHIN_BOUNDS |" in page
+    files = {p: (p.read_bytes(), p.stat().st_mtime_ns) for p in out.rglob("*") if p.is_file()}
+    second = fatline("report", str(PAIRS), "--out", str(out))
+    assert second.returncode == 0, second.stderr
+    again = {p: (p.read_bytes(), p.stat().st_mtime_ns) for p in out.rglob("*") if p.is_file()}
+    assert {p: b for p, (b, _) in again.items()} == {p: b for p, (b, _) in files.items()}
+    traces = [p for p in files if p.parent.name == "traces"]
+    assert traces and all(again[p][1] == files[p][1] for p in traces)  # the cache was used
