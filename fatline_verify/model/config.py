@@ -17,7 +17,7 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
-from ..errors import InvalidModel, Unsupported
+from ..errors import InvalidModel
 from ..lemmas.properties import CHECKED
 from ..outputs import SLUG, NotReadable, read_regular
 from .numbers import MAX_DIGITS, Number, Point, format_number, normalize, parse_number
@@ -247,14 +247,9 @@ def model_from_mapping(data: dict[str, object], *, source: str = "", default_nam
     options = options_from_mapping(data.get("options", {}))  # type: ignore[arg-type]
     rules = _rules(data.get("rules"), options, data.get("options", {}))  # type: ignore[arg-type]
     if not isinstance(options.scheduler, Scheduler):
-        from ..schedulers.activation import ROUND_SCHEDULERS, round_scheduler
+        from ..schedulers.activation import scheduler_named
 
-        try:
-            round_scheduler(options.scheduler)
-        except Unsupported:
-            known = ", ".join([*ROUND_SCHEDULERS, Scheduler.ASYNC.value])
-            name = str(options.scheduler)
-            raise InvalidModel(f"options.scheduler={name!r}: unknown scheduler; expected one of {known}") from None
+        scheduler_named(str(options.scheduler))  # a registered one, or one line naming every scheduler
     bounds_raw = data.get("bounds", {})
     if not isinstance(bounds_raw, dict):
         raise InvalidModel(f"bounds={bounds_raw!r}: expected a table")

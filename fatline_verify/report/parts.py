@@ -14,7 +14,7 @@ from typing import Any
 
 from ..lemmas.properties import PROVED_LEMMAS
 from ..model.config import IMPLIED
-from ..model.options import CATALOGUE
+from ..model.options import meaning
 from ..prove.coverage import LemmaVerdict, lemma_verdicts
 from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, violation_line
 from .data import ModelReport
@@ -136,7 +136,7 @@ def readings_html(report: ModelReport, root: str, sep: str = ", ") -> str:
     if not diff:
         return f'<a href="{docs}">every default reading</a>'
     return sep.join(
-        f'<a href="{docs}#{html.escape(k)}" title="{html.escape(CATALOGUE[k].readings[v])}">'
+        f'<a href="{docs}#{html.escape(k)}" title="{html.escape(meaning(k, v))}">'
         f"<code>{html.escape(k)}=<wbr>{html.escape(v)}</code></a>"
         for k, v in diff.items()
     )

@@ -16,8 +16,8 @@ from typing import Protocol
 
 import numpy as np
 
-from ..errors import Unsupported
-from ..model.options import Scheduler
+from ..errors import InvalidModel, Unsupported
+from ..model.options import Scheduler, SchedulerName, parse_reading
 
 
 class RoundScheduler(Protocol):
@@ -171,9 +171,29 @@ def round_scheduler(kind: Scheduler | str) -> RoundScheduler:
     return found
 
 
+def scheduler_named(name: str, where: str = "options.scheduler") -> Scheduler | SchedulerName:
+    """The scheduler called ``name``: one of the paper's or a registered one (plug-ins loaded), or a
+    one-line :class:`InvalidModel` naming ``where`` and every scheduler there is."""
+    try:
+        reading = parse_reading("scheduler", name)
+        if not isinstance(reading, Scheduler):
+            round_scheduler(reading)
+        return reading  # type: ignore[return-value]
+    except (InvalidModel, Unsupported):
+        known = ", ".join([*ROUND_SCHEDULERS, Scheduler.ASYNC.value])
+        raise InvalidModel(f"{where}={name!r}: unknown scheduler; expected one of {known}") from None
+
+
 def encoded_schedulers() -> tuple[Scheduler, ...]:
     """The schedulers whose rounds the prover's obligations encode."""
     return tuple(s.kind for s in ROUND_SCHEDULERS.values() if s.encoded)
 
 
-__all__ = ["ROUND_SCHEDULERS", "RoundScheduler", "encoded_schedulers", "register", "round_scheduler"]
+__all__ = [
+    "ROUND_SCHEDULERS",
+    "RoundScheduler",
+    "encoded_schedulers",
+    "register",
+    "round_scheduler",
+    "scheduler_named",
+]

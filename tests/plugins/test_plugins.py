@@ -440,3 +440,22 @@ def test_a_second_report_reads_its_own_check_json_and_writes_the_same(tmp_path: 
     assert {p: b for p, (b, _) in again.items()} == {p: b for p, (b, _) in files.items()}
     traces = [p for p in files if p.parent.name == "traces"]
     assert traces and all(again[p][1] == files[p][1] for p in traces)  # the cache was used
+
+
+def test_simulate_takes_a_registered_scheduler(tmp_path: Path) -> None:
+    bad = fatline("simulate", "paper", "--init", "0,0 0,3 3,0", "--scheduler", "pair")
+    assert bad.returncode == 2
+    assert bad.stderr == (
+        "fatline: error: scheduler='pair': unknown scheduler; expected one of ssync, fsync, centralized, pairs, async\n"
+    )
+    three = fatline("simulate", "paper", "--init", "0,0 0,3 2,2 4,4", "--scheduler", "pairs", "--schedule", "0,1,2")
+    assert three.returncode == 2 and "expected one or two under scheduler=pairs" in three.stderr
+    trace = tmp_path / "t.json"
+    sim = fatline("simulate", "paper", "--init", "0,0 0,3 3,0", "--scheduler", "pairs", "--trace", str(trace))
+    assert sim.returncode == 1, sim.stderr
+    doc = json.loads(trace.read_text())
+    assert doc["model"]["options"]["scheduler"] == "pairs"
+    assert doc["plugins"] == [{"kind": "scheduler", "name": "pairs", **TOY_DIST}]
+    assert "reproduces" in fatline("replay", str(trace)).stdout
+    gone = without_plugin("replay", str(trace))
+    assert gone.returncode == 2 and "scheduler 'pairs' is a plug-in that is not installed" in gone.stderr
