@@ -22,7 +22,7 @@ from ..model.lattice import canonical, key_codec
 from ..model.options import Scheduler
 from ..model.swarm import State, is_goal
 from .activation import RoundScheduler, round_scheduler
-from .base import Codec, Marks
+from .base import Codec, Expansion, Marks
 from .round import RoundResult, decide_all, enabled, global_path, play_round
 
 MAX_SCHEDULE_STEPS = 1_000_000
@@ -186,6 +186,10 @@ class RoundSystem:
 
     def array_positions(self, states: np.ndarray) -> np.ndarray:
         return states
+
+    def step_positions(self, states: np.ndarray, ex: Expansion) -> tuple[np.ndarray, np.ndarray, int]:
+        """A round's successor is its positions, on the lattice (every move ends on it)."""
+        return states[ex.src], ex.after, 1
 
     default_engine = "compiled"
     """The engine ``check`` uses unless told otherwise."""

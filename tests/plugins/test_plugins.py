@@ -459,3 +459,105 @@ def test_simulate_takes_a_registered_scheduler(tmp_path: Path) -> None:
     assert "reproduces" in fatline("replay", str(trace)).stdout
     gone = without_plugin("replay", str(trace))
     assert gone.returncode == 2 and "scheduler 'pairs' is a plug-in that is not installed" in gone.stderr
+
+
+# --- a step lemma under ASYNC: judged on the events the executable model plays ----------------------
+
+
+@pytest.mark.parametrize(("K", "readings"), [(2, {}), (3, {"motion": "non-rigid", "path": "horizontal-then-vertical"})])
+def test_async_step_positions_are_the_executable_model_s(K: int, readings: dict[str, str]) -> None:
+    """Every event's positions before and after, as the engines give them to a registered lemma, are
+    what :meth:`AsyncSystem.play` computes: looks and stops move no one, a move step its robot by one
+    step, also to a point off the finer lattice (where the engines' successor is blank)."""
+    from fractions import Fraction
+
+    import numpy as np
+
+    from fatline_verify.check.engines import engine_for
+    from fatline_verify.check.initial import initial_array
+    from fatline_verify.check.search import explore
+    from fatline_verify.schedulers.systems import system_for
+    from tests.async_engines import asynchronous
+    from tests.conftest import make_model
+
+    model = asynchronous(make_model(**readings), K)
+    system = system_for(model)
+    init = system.initial(initial_array(3, (6, 6), model))
+    ex = explore(system, init, (6, 6), engine_for(system, "fast"), after_violation="continue")
+    batch = ex.states[np.random.default_rng(3).choice(len(ex.states), 200, replace=False)]
+    for engine in ("compiled", "fast", "scalar"):
+        expansion = engine_for(system, engine).expand(batch)
+        before, after, unit = system.step_positions(batch, expansion)
+        assert unit == K * K and (~expansion.exact).any()
+        played = []
+        for row in range(len(batch)):
+            _, steps = system.successors(system.from_array(batch[row]))
+            played += [(row, code, step) for code, step in steps]
+        assert [(r, c) for r, c, _ in played] == list(
+            zip(expansion.src.tolist(), expansion.action.tolist(), strict=True)
+        )
+        for k, (_, _, step) in enumerate(played):
+            assert [tuple(Fraction(int(v), unit) for v in p) for p in before[k]] == list(step.before)
+            assert [tuple(Fraction(int(v), unit) for v in p) for p in after[k]] == list(step.after)
+
+
+def _async_left(snapshot, model):  # type: ignore[no-untyped-def]
+    """A seeded rule: a robot that sees one to its right steps one radius left (under K=2 its first move
+    step ends halfway, between lattice points: judged by the lemma's scalar check on exact positions)."""
+    from fatline_verify.rules.paper.algorithm import Decision
+
+    rho = model.radius
+    if any(c[0] > 0 for c in snapshot):
+        return Decision("left", (-rho, 0), ((0, 0), (-rho, 0)), ())
+    return Decision("stay", (0, 0), ((0, 0),), ())
+
+
+@pytest.mark.parametrize("engine", ["compiled", "fast", "scalar"])
+def test_every_async_engine_finds_a_real_left_move_and_its_witness_replays(no_left: object, engine: str) -> None:
+    from dataclasses import replace
+    from fractions import Fraction
+
+    from fatline_verify.check.checker import check
+    from fatline_verify.lemmas.properties import Verdict
+    from fatline_verify.trace.traces import check_replay
+    from tests.async_engines import asynchronous
+    from tests.conftest import make_model
+
+    model = asynchronous(replace(make_model(), algorithm=_async_left), 2)
+    rows = {(r.lemma.value, r.robots): r for r in check(model, (2, 2), (7, 7), engine=engine).results}
+    assert rows[("no-left", 2)].verdict is Verdict.VIOLATED
+    doc = rows[("no-left", 2)].witness
+    assert doc is not None and doc["violation"]["property"] == "no-left"
+    # robot 0 looks, then its first move step takes it half a radius left
+    assert [(e["event"], e["robot"]) for e in doc["rounds"]] == [("look", 0), ("move", 0)]
+    last = check_replay(doc, model).rounds[-1]
+    assert last.after[0][0] == last.before[0][0] - Fraction(1, 2)
+
+
+def test_installing_the_toy_lemmas_leaves_paper_async_as_it_was(tmp_path: Path) -> None:
+    """Under ASYNC a registered lemma is judged on each event's exact positions: ``fatline check
+    paper-async`` with the plug-in installed gives the paper's lemmas the same searches, verdicts and
+    traces as without it; no-left holds (no robot's x decreases in any event the model plays) and
+    no-down has replayed witnesses."""
+    runs = {}
+    for name, env_path in (("without", ""), ("with", str(SITE))):
+        out = tmp_path / f"{name}.json"
+        env = {**os.environ, "PYTHONPATH": env_path}
+        argv = ["check", "paper-async", "--robots", "2..3", "--json", str(out), "--traces", str(tmp_path / name), "-q"]
+        got = subprocess.run(
+            [sys.executable, "-m", "fatline_verify.cli", *argv], capture_output=True, text=True, env=env, cwd=ROOT
+        )
+        assert got.returncode == 1, got.stderr
+        data = json.loads(out.read_text())
+        searches = [{k: v for k, v in s.items() if k not in ("seconds", "bytes")} for s in data["searches"]]
+        rows = {(r["lemma"], r["robots"]): (r["verdict"], r["reason"], r["witness_rounds"]) for r in data["lemmas"]}
+        traces = {p.name: p.read_text() for p in (tmp_path / name).glob("*.json")}
+        runs[name] = (searches, rows, traces)
+    (s0, r0, t0), (s1, r1, t1) = runs["without"], runs["with"]
+    assert s0 == s1
+    assert {k: v for k, v in r1.items() if k[0] not in ("no-left", "no-down")} == r0
+    assert {r1[("no-left", n)][0] for n in (2, 3)} == {"HOLDS_WITHIN_BOUNDS"}
+    assert {r1[("no-down", n)][0] for n in (2, 3)} == {"VIOLATED"}
+    assert {k: v for k, v in t1.items() if "no-down" not in k} == t0
+    rep = fatline("replay", *(str(tmp_path / "with" / f"paper-async-no-down-n{n}.json") for n in (2, 3)))
+    assert rep.returncode == 0 and rep.stdout.count("reproduces") == 2, rep.stdout + rep.stderr
