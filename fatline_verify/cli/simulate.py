@@ -52,7 +52,9 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     initial = parse_init(args.init, model)
     if args.scheduler:  # the trace records the scheduler it ran under, so replay runs it again
         named = scheduler_named(args.scheduler, where="scheduler")
-        model = replace(model, options=replace(model.options, scheduler=named))
+        if named != model.options.scheduler:  # its own parameters at their defaults, not the model's scheduler's
+            kept = tuple(seam for seam in model.settings if seam[0] != "scheduler")
+            model = replace(model, options=replace(model.options, scheduler=named), settings=kept)
     scheduler = model.options.scheduler
     word = system_for(model).step_word
     lines = [f"model {model.describe()}"]

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..errors import InvalidModel
+from ..model.seams import Param
 
 Model = Any
 """A :class:`fatline_verify.model.config.Model` (not imported: the model package imports this one)."""
@@ -91,6 +92,9 @@ class RuleSet:
     """What each rule label its decision function returns means (shown beside a deadlock's rules)."""
     liveness: Liveness | None = field(default=None, compare=False)
     """What the liveness obligations need (``None``: ``fatline prove`` has none for this rule set)."""
+    parameters: dict[str, Param] = field(default_factory=dict, repr=False, compare=False)
+    """Parameters of its own (:mod:`fatline_verify.model.seams`), set in a model file's ``[rules]``
+    table; its decision function reads their values as ``model.setting("rules")``."""
 
     def accepts(self, option: str) -> bool:
         """Whether a model of this rule set may set ``option``."""

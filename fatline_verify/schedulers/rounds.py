@@ -21,7 +21,7 @@ from ..model.config import Model
 from ..model.lattice import canonical, key_codec
 from ..model.options import Scheduler
 from ..model.swarm import State, is_goal
-from .activation import RoundScheduler, round_scheduler
+from .activation import RoundScheduler, scheduler_for
 from .base import Codec, Expansion, Marks
 from .round import RoundResult, decide_all, enabled, global_path, play_round
 
@@ -49,7 +49,7 @@ class RoundSystem:
     def __init__(self, model: Model, kind: Scheduler) -> None:
         self.model = model
         self.kind = kind
-        self.rounds: RoundScheduler = round_scheduler(kind)
+        self.rounds: RoundScheduler = scheduler_for(model, kind)
 
     # --- executable side -------------------------------------------------------------------------
     def start(self, positions: State) -> State:

@@ -9,7 +9,7 @@ import subprocess
 import sys
 from collections.abc import Iterator
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import pytest
 
@@ -80,7 +80,7 @@ def test_the_toy_decides_as_its_file_says(toy: registry.RuleSet) -> None:
 def test_a_model_of_the_toy_carries_its_rule_set_and_no_paper_reading(toy: registry.RuleSet) -> None:
     model = load_model(MODEL)
     data = model_to_mapping(model)
-    assert data["rules"] == "toy-step"
+    assert data["rules"] == {"name": "toy-step", "reach": 3}  # its [rules] table: the name, its own parameter
     assert set(data["options"]) <= registry.MODEL_OPTIONS  # type: ignore[arg-type]
     back = model_from_mapping(data)
     assert (back.rules, back.options, back.parameters) == (model.rules, model.options, model.parameters)
@@ -130,7 +130,7 @@ def test_simulate_replay_and_report_use_the_toy(tmp_path: Path) -> None:
     assert sim.returncode == 1, sim.stderr
     assert "r0 toy-step -> (1, 0)" in sim.stdout
     doc = json.loads(trace.read_text())
-    assert doc["model"]["rules"] == "toy-step"
+    assert doc["model"]["rules"] == {"name": "toy-step", "reach": 3}
     assert doc["violation"]["property"] == "connectivity"
     rep = fatline("replay", str(trace))
     assert rep.returncode == 0 and "reproduces" in rep.stdout, rep.stdout + rep.stderr
@@ -561,3 +561,137 @@ def test_installing_the_toy_lemmas_leaves_paper_async_as_it_was(tmp_path: Path) 
     assert {k: v for k, v in t1.items() if "no-down" not in k} == t0
     rep = fatline("replay", *(str(tmp_path / "with" / f"paper-async-no-down-n{n}.json") for n in (2, 3)))
     assert rep.returncode == 0 and rep.stdout.count("reproduces") == 2, rep.stdout + rep.stderr
+
+
+# --- parameters of a scheduler's or rule set's own: [scheduler] and [rules] tables ------------------
+
+
+def _pairs_model(tmp_path: Path, table: str, name: str = "pairs-k") -> Path:
+    """``pairs.toml`` with a ``[scheduler]`` table (or any other text) appended."""
+    path = tmp_path / f"{name}.toml"
+    path.write_text(PAIRS.read_text().replace('name = "paper-pairs"', f'name = "{name}"') + "\n" + table)
+    return path
+
+
+def test_the_scheduler_s_k_is_set_in_the_model_file_and_changes_the_rounds(tmp_path: Path) -> None:
+    """k = 1 plays exactly centralized's rounds, k = 2 (the default) the toy's as before, k >= n every
+    set, as ssync: the same states, as many transitions."""
+    searches = {}
+    for k in (1, 2, 4):
+        out = tmp_path / f"k{k}.json"
+        model = _pairs_model(tmp_path, f"[scheduler]\nk = {k}\n", f"pairs-k{k}")
+        got = fatline("check", str(model), "--robots", "4", "--json", str(out), "--traces", str(tmp_path), "-q")
+        assert got.returncode == 1, got.stderr
+        data = json.loads(out.read_text())
+        assert data["model"]["scheduler"] == {"k": k}
+        searches[k] = (data["searches"][0]["states"], data["searches"][0]["transitions"])
+    for name in ("centralized", "ssync"):
+        out = tmp_path / f"{name}.json"
+        argv = ["check", "paper", "--robots", "4", "--json", str(out), "--traces", str(tmp_path / name), "-q"]
+        if name == "centralized":
+            argv[1] = "paper-centralized"
+        assert fatline(*argv, cwd=ROOT).returncode == 1
+        s = json.loads(out.read_text())["searches"][0]
+        searches[name] = (s["states"], s["transitions"])  # type: ignore[index]
+    assert searches[2] == (11243, 17726)
+    assert searches[1] == searches["centralized"]  # type: ignore[index]
+    assert searches[4] == searches["ssync"]  # type: ignore[index]
+
+
+def test_k_is_in_the_fingerprint_the_trace_and_replay(tmp_path: Path, installed: None) -> None:
+    from fatline_verify.check.checker import check_fingerprint
+    from fatline_verify.trace.traces import trace_model
+
+    two, three = load_model(_pairs_model(tmp_path, "")), load_model(_pairs_model(tmp_path, "[scheduler]\nk = 3\n"))
+    assert two.setting("scheduler") == {"k": 2} and three.setting("scheduler") == {"k": 3}
+    assert check_fingerprint(two) != check_fingerprint(three)
+    assert model_to_mapping(three)["scheduler"] == {"k": 3}
+    assert "scheduler k=3" in three.describe()
+    model = _pairs_model(tmp_path, "[scheduler]\nk = 3\n")
+    trace = tmp_path / "three.json"
+    sim = fatline("simulate", str(model), "--init", "0,0 0,3 2,2", "--schedule", "0,1,2", "--trace", str(trace))
+    assert sim.returncode in (0, 1), sim.stderr
+    doc = json.loads(trace.read_text())
+    assert doc["model"]["scheduler"] == {"k": 3}
+    assert "reproduces" in fatline("replay", str(trace)).stdout
+    assert trace_model(doc).setting("scheduler") == {"k": 3}
+    other = fatline("replay", str(trace), "--model", str(PAIRS))  # k = 2: replayed as another model
+    assert other.returncode == 0 and "reproduces under paper-pairs" in other.stdout, other.stdout + other.stderr
+    doc["model"]["scheduler"] = {"k": 0}
+    trace.write_text(json.dumps(doc))
+    bad = fatline("replay", str(trace))
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1
+    assert "scheduler.k=0: expected a whole number 1..64 (at most k robots a round)" in bad.stderr
+
+
+@pytest.mark.parametrize(
+    ("table", "error"),
+    [
+        ("[scheduler]\nj = 2\n", "scheduler.j=2: unknown key; expected one of k"),
+        ('[scheduler]\nk = "two"\n', "scheduler.k='two': expected a whole number 1..64 (at most k robots a round)"),
+        ("[scheduler]\nk = 0\n", "scheduler.k=0: expected a whole number 1..64 (at most k robots a round)"),
+        ("[scheduler]\nk = true\n", "scheduler.k=True: expected a whole number 1..64 (at most k robots a round)"),
+        ("scheduler = 3\n", "scheduler=3: expected a table of the scheduler 'pairs''s parameters"),
+    ],
+)
+def test_a_bad_scheduler_parameter_is_one_line_before_any_work(tmp_path: Path, table: str, error: str) -> None:
+    model = _pairs_model(tmp_path, table) if not table.startswith("scheduler =") else tmp_path / "m.toml"
+    if table.startswith("scheduler ="):
+        model.write_text(table + PAIRS.read_text())
+    out = tmp_path / "out.json"
+    got = fatline("check", str(model), "--json", str(out))
+    assert (got.returncode, got.stdout, got.stderr) == (2, "", f"fatline: error: {error}\n")
+    assert not out.exists()
+
+
+def test_a_scheduler_that_declares_none_takes_none(tmp_path: Path) -> None:
+    model = tmp_path / "m.toml"
+    model.write_text('name = "m"\n[options]\nscheduler = "ssync"\n[scheduler]\nk = 2\n')
+    got = fatline("check", str(model))
+    assert got.returncode == 2
+    assert got.stderr == "fatline: error: scheduler.k=2: unknown key; the scheduler 'ssync' takes no parameters\n"
+
+
+def test_the_rule_set_s_parameter_is_set_in_its_rules_table(tmp_path: Path, toy: registry.RuleSet) -> None:
+    model = tmp_path / "reach.toml"
+    model.write_text(
+        MODEL.read_text()
+        .replace('rules = "toy-step"\n', "")
+        .replace("[parameters]", '[rules]\nname = "toy-step"\nreach = 4\n\n[parameters]', 1)
+    )
+    far = load_model(model)
+    assert far.rules == "toy-step" and far.setting("rules") == {"reach": 4}
+    assert not registry.decide([(3, 0)], far).moves  # 3 radii right is no longer far enough
+    assert registry.decide([(4, 0)], far).moves
+    assert registry.decide([(3, 0)], load_model(MODEL)).moves  # the default, 3
+    assert model_to_mapping(far)["rules"] == {"name": "toy-step", "reach": 4}
+    back = model_from_mapping(model_to_mapping(far))
+    assert (back.rules, back.settings) == (far.rules, far.settings)
+    for text, error in (
+        ('[rules]\nname = "toy-step"\nreach = 0\n', "rules.reach=0: expected a whole number >= 1 (how many radii"),
+        ('[rules]\nname = "toy-step"\nfar = 4\n', "rules.far=4: unknown key; expected one of reach"),
+        ("[rules]\nreach = 4\n", "rules.name=None: expected the name of a rule set in the [rules] table"),
+        ('[rules]\nname = "paper"\nreach = 4\n', "rules.reach=4: unknown key; the rule set 'paper' takes no param"),
+    ):
+        bad = tmp_path / "bad.toml"
+        bad.write_text('name = "bad"\n' + text)
+        got = fatline("check", str(bad))
+        assert got.returncode == 2 and got.stderr.startswith(f"fatline: error: {error}"), got.stderr
+        assert got.stderr.count("\n") == 1
+
+
+def test_a_scheduler_with_parameters_must_take_them() -> None:
+    from fatline_verify.model.options import SchedulerName
+    from fatline_verify.model.seams import Param
+    from fatline_verify.schedulers.activation import register
+
+    class Deaf:
+        kind = SchedulerName("deaf")
+        alone = True
+        encoded = False
+        parameters: ClassVar[dict[str, Param]] = {"k": Param(2, "k")}
+
+    with pytest.raises(ValueError, match=r"scheduler 'deaf': declares parameters but no configured\(\*\*values\)"):
+        register(Deaf())  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="expected an int, a bool or a str"):
+        Param(1.5, "a float")  # type: ignore[arg-type]
