@@ -84,6 +84,9 @@ def register(lemma: StepLemma) -> StepLemma:
         )
     placed = StepLemma(lemma.name, lemma.paper, lemma.violators, lemma.batch, lemma.version, 1 << bit)
     _REGISTRY[lemma.name] = placed
+    from ..rules import registry as rules
+
+    rules.claim("lemma", lemma.name)  # the plug-in package registering it, if any
     return placed
 
 

@@ -460,20 +460,6 @@ class Options:
         return {k: v for k, v in self.as_dict().items() if base[k] != v}
 
 
-def meaning(name: str, value: str) -> str:
-    """What reading ``value`` of option ``name`` means: the catalogue's words, or for a registered
-    scheduler of one's own (a plug-in) the first line of its class's docstring."""
-    spec = CATALOGUE[name]
-    if value in spec.readings:
-        return spec.readings[value]
-    if name == "scheduler":
-        from ..schedulers.activation import round_scheduler
-
-        doc = (type(round_scheduler(value)).__doc__ or "").strip()
-        return doc.splitlines()[0] if doc else f"a registered scheduler ({value})"
-    raise KeyError(f"{name}={value}")
-
-
 REPAIRS = tuple((name, spec.default) for name, spec in CATALOGUE.items() if spec.repair)
 """The repair options and their ``off`` readings."""
 

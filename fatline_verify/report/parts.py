@@ -14,8 +14,9 @@ from typing import Any
 
 from ..lemmas.properties import PROVED_LEMMAS
 from ..model.config import IMPLIED
-from ..model.options import meaning
+from ..model.options import CATALOGUE
 from ..prove.coverage import LemmaVerdict, lemma_verdicts
+from ..schedulers.activation import round_scheduler
 from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, violation_line
 from .data import ModelReport
 
@@ -124,6 +125,15 @@ def _own_rules(report: ModelReport) -> str | None:
 def readings_text(report: ModelReport) -> str:
     diff = report.model.options.differences()
     return ", ".join(f"{k}={v}" for k, v in diff.items()) or _own_rules(report) or "every default reading"
+
+
+def meaning(name: str, value: str) -> str:
+    """What reading ``value`` of option ``name`` means: the catalogue's words, or for a registered
+    scheduler of one's own (a plug-in) the first line of its class's docstring."""
+    if value in CATALOGUE[name].readings:
+        return CATALOGUE[name].readings[value]
+    doc = (type(round_scheduler(value)).__doc__ or "").strip() if name == "scheduler" else ""
+    return doc.splitlines()[0] if doc else f"{name}={value}"
 
 
 def readings_html(report: ModelReport, root: str, sep: str = ", ") -> str:

@@ -112,6 +112,7 @@ def register(rule_set: RuleSet) -> RuleSet:
     if known is not None and known != rule_set:
         raise ValueError(f"rule set {rule_set.name!r} is registered twice")
     _REGISTRY[rule_set.name] = rule_set
+    claim("rules", rule_set.name)
     return rule_set
 
 
@@ -143,17 +144,15 @@ _PROVIDERS: dict[tuple[str, str], Provider] = {}
 """``(kind, name) -> Provider`` for everything an entry point registered; kind is ``"rules"``,
 ``"lemma"`` or ``"scheduler"``."""
 
+_loading: list[Provider] = []
+"""The distribution whose entry point is being loaded (what :func:`claim` attributes to)."""
 
-def _registered_names() -> set[tuple[str, str]]:
-    """Every registered ``(kind, name)``: rule sets, step lemmas and round schedulers."""
-    from ..lemmas import registry as lemmas
-    from ..schedulers.activation import ROUND_SCHEDULERS
 
-    return (
-        {("rules", n) for n in _REGISTRY}
-        | {("lemma", n) for n in lemmas._REGISTRY}
-        | {("scheduler", n) for n in ROUND_SCHEDULERS}
-    )
+def claim(kind: str, name: str) -> None:
+    """Called by each registry's ``register``: remember that the entry point being loaded, if any,
+    registered the ``kind`` called ``name``."""
+    if _loading:
+        _PROVIDERS.setdefault((kind, name), _loading[-1])
 
 
 def load_plugins() -> None:
@@ -162,18 +161,18 @@ def load_plugins() -> None:
     from importlib import metadata  # a twentieth of a second to import: only when plug-ins are asked for
 
     for ep in metadata.entry_points(group=GROUP):
-        before = _registered_names()
-        try:
-            obj = ep.load()
-        except Exception as exc:  # a broken plug-in is named, not a traceback
-            why = f"{exc.__class__.__name__}: {exc}"[:200]
-            raise InvalidModel(f"plugin {ep.name}={ep.value!r}: cannot be loaded ({why})") from None
-        if callable(obj):
-            obj()
         dist = ep.dist
-        found = Provider(dist.name, dist.version) if dist is not None else Provider(ep.value.split(".")[0], "")
-        for key in _registered_names() - before:
-            _PROVIDERS[key] = found
+        _loading.append(Provider(dist.name, dist.version) if dist is not None else Provider(ep.value.split(".")[0], ""))
+        try:
+            try:
+                obj = ep.load()
+            except Exception as exc:  # a broken plug-in is named, not a traceback
+                why = f"{exc.__class__.__name__}: {exc}"[:200]
+                raise InvalidModel(f"plugin {ep.name}={ep.value!r}: cannot be loaded ({why})") from None
+            if callable(obj):
+                obj()
+        finally:
+            _loading.pop()
 
 
 def provider(kind: str, name: str) -> Provider | None:
@@ -225,6 +224,7 @@ __all__ = [
     "Liveness",
     "Provider",
     "RuleSet",
+    "claim",
     "decide",
     "decider",
     "get",

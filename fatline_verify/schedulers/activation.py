@@ -160,6 +160,9 @@ def register(scheduler: RoundScheduler) -> RoundScheduler:
     if declared(scheduler) and not callable(getattr(scheduler, "configured", None)):
         raise ValueError(f"scheduler {name!r}: declares parameters but no configured(**values) to take them")
     ROUND_SCHEDULERS.setdefault(name, scheduler)
+    from ..rules import registry
+
+    registry.claim("scheduler", name)  # the plug-in package registering it, if any
     return ROUND_SCHEDULERS[name]
 
 
