@@ -306,14 +306,15 @@ class Shard:
         return Transitions(**{f: _concat([getattr(p, f) for p in parts], dtypes[f]) for f in names})
 
     def _lemma_flags(self, keys: np.ndarray, src: np.ndarray, action: np.ndarray) -> np.ndarray:
-        """The registered lemmas' bits of a batch's transitions: the engine's own successors, robot by
-        robot (the keyed ones are canonical), checked to be the same transitions."""
+        """The registered lemmas' bits of a batch's transitions: each step's exact positions before and
+        after, robot by robot (the keyed successors are canonical), from the engine's own expansion,
+        checked to list the same transitions."""
         states = self.codec.decode(keys)
         full = self.engine.expand(states)
         if not (np.array_equal(full.src, src) and np.array_equal(full.action, action)):
             raise RuntimeError("the engine's keyed and positional expansions list different transitions")
-        positions = self.system.array_positions(states)
-        return extra_flags(positions[full.src], self.system.array_positions(full.after), self.system.model, self.lemmas)
+        before, after, unit = self.system.step_positions(states, full)
+        return extra_flags(before, after, self.system.model, self.lemmas, unit)
 
     def merge(self, parts: list[tuple[np.ndarray, np.ndarray, np.ndarray]]) -> tuple[np.ndarray, ...]:
         """De-duplicate the candidates routed here: the new keys (sorted), each with its least

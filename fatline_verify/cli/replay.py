@@ -16,6 +16,7 @@ from typing import Any
 
 from ..errors import FatlineError
 from ..model.config import Model
+from ..model.seams import SEAMS
 from ..outputs import Kind, claim_dir, claim_files, write_text
 from ..text import plural, trace_lines
 from ..trace.simulate import Run
@@ -24,12 +25,14 @@ from .common import EXIT_BAD, EXIT_FOUND, EXIT_OK, add_command, add_force, emit,
 
 
 def _same_model(doc: dict[str, Any], model: Model) -> bool:
-    """Whether ``model`` has the trace's own rule set, readings and parameters (its name may differ)."""
+    """Whether ``model`` has the trace's own rule set, readings and parameters, its scheduler's and rule
+    set's own included (its name may differ)."""
     try:
         own = trace_model(doc)
     except FatlineError:
         return False
-    return own.rules == model.rules and own.options == model.options and own.parameters == model.parameters
+    same = own.rules == model.rules and own.options == model.options and own.parameters == model.parameters
+    return same and all(own.setting(seam) == model.setting(seam) for seam in SEAMS)
 
 
 def _first(diffs: list[str]) -> str:

@@ -7,8 +7,8 @@ from dataclasses import replace
 from typing import Any
 
 from ..errors import InvalidInput
-from ..model.options import Scheduler
 from ..outputs import Kind, claim_file
+from ..schedulers.activation import scheduler_named
 from ..schedulers.systems import system_for
 from ..text import plural, trace_lines
 from ..trace.simulate import Outcome, parse_schedule, play_schedule, simulate
@@ -51,7 +51,10 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         model = model.with_q(args.q)
     initial = parse_init(args.init, model)
     if args.scheduler:  # the trace records the scheduler it ran under, so replay runs it again
-        model = replace(model, options=model.options.with_(scheduler=args.scheduler))
+        named = scheduler_named(args.scheduler, where="scheduler")
+        if named != model.options.scheduler:  # its own parameters at their defaults, not the model's scheduler's
+            kept = tuple(seam for seam in model.settings if seam[0] != "scheduler")
+            model = replace(model, options=replace(model.options, scheduler=named), settings=kept)
     scheduler = model.options.scheduler
     word = system_for(model).step_word
     lines = [f"model {model.describe()}"]
@@ -90,8 +93,9 @@ def register(sub: Any) -> None:
     )
     p.add_argument(
         "--scheduler",
-        choices=[s.value for s in Scheduler],
-        help="override the model's scheduler (with --schedule: the rule every round is checked against)",
+        metavar="NAME",
+        help="override the model's scheduler: ssync, fsync, centralized, async or a registered one (a plug-in's; "
+        "with --schedule: the rule every round is checked against)",
     )
     p.add_argument(
         "--schedule",

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from fractions import Fraction
 from typing import Any
 
 import numpy as np
@@ -83,6 +84,9 @@ def register(lemma: StepLemma) -> StepLemma:
         )
     placed = StepLemma(lemma.name, lemma.paper, lemma.violators, lemma.batch, lemma.version, 1 << bit)
     _REGISTRY[lemma.name] = placed
+    from ..rules import registry as rules
+
+    rules.claim("lemma", lemma.name)  # the plug-in package registering it, if any
     return placed
 
 
@@ -94,20 +98,60 @@ def registered() -> tuple[StepLemma, ...]:
     return tuple(_REGISTRY.values())
 
 
+def checked() -> tuple[Any, ...]:
+    """Every lemma ``fatline check`` gives a verdict: the paper's (:data:`~.properties.CHECKED`, in
+    report order), then the registered step lemmas (plug-ins loaded)."""
+    from .properties import CHECKED
+
+    return (*CHECKED, *registered())
+
+
 def find(name: str) -> StepLemma | None:
     """The registered lemma called ``name``, if any."""
     return next((lemma for lemma in registered() if lemma.name == name), None)
 
 
-def extra_flags(before: np.ndarray, after: np.ndarray, model: Any, lemmas: Sequence[StepLemma]) -> np.ndarray:
-    """The registered lemmas' bits for steps ``before[k] -> after[k]`` (``(t, n, 2)`` arrays)."""
+def extra_flags(
+    before: np.ndarray, after: np.ndarray, model: Any, lemmas: Sequence[StepLemma], unit: int = 1
+) -> np.ndarray:
+    """The registered lemmas' bits for steps ``before[k] -> after[k]`` (``(t, n, 2)`` integer arrays in
+    units of ``1/unit`` lattice unit: :meth:`~fatline_verify.schedulers.base.TransitionSystem.step_positions`).
+
+    A step whose positions all lie on the lattice is judged by the lemma's vectorised check, in lattice
+    units, as it always was; one with a robot between lattice points (an asynchronous robot halfway
+    through its move) by its scalar check on the exact positions, which is what replay judges. So
+    every engine judges the same steps the executable model plays, under every scheduler."""
     bits = np.zeros(len(before), dtype=np.int64)
+    if not lemmas or not len(before):
+        return bits
+    whole = ((before % unit == 0) & (after % unit == 0)).all(axis=(1, 2)) if unit != 1 else np.ones(len(before), bool)
+    on = np.flatnonzero(whole)
+    off = np.flatnonzero(~whole)
+    b_on, a_on = before[on] // unit, after[on] // unit
+    exact = _exact_steps(before[off], after[off], unit)
     for lemma in lemmas:
-        hit = np.asarray(lemma.batch(before, after, model), dtype=bool)
-        if hit.shape != (len(before),):
-            raise ValueError(f"lemma {lemma.name!r}: batch check gave shape {hit.shape}; expected ({len(before)},)")
+        hit = np.zeros(len(before), dtype=bool)
+        if len(on):
+            got = np.asarray(lemma.batch(b_on, a_on, model), dtype=bool)
+            if got.shape != (len(on),):
+                raise ValueError(f"lemma {lemma.name!r}: batch check gave shape {got.shape}; expected ({len(on)},)")
+            hit[on] = got
+        for k, (b, a) in zip(off, exact, strict=True):
+            hit[k] = bool(lemma.violators(b, a, model))
         bits |= np.where(hit, lemma.flag, 0)
     return bits
 
 
-__all__ = ["CORE_FLAGS", "FLAG_BITS", "StepLemma", "extra_flags", "find", "register", "registered"]
+def _exact_steps(before: np.ndarray, after: np.ndarray, unit: int) -> list[tuple[Points, Points]]:
+    """Steps as exact positions in lattice units (a whole number as an ``int``, a fraction as a
+    :class:`~fractions.Fraction`, as the executable model keeps them); each distinct value converted once."""
+    from ..model.numbers import normalize
+
+    if not len(before):
+        return []
+    exact = {int(v): normalize(Fraction(int(v), unit)) for v in np.unique(np.concatenate([before, after]))}
+    rows = zip(before.tolist(), after.tolist(), strict=True)
+    return [([(exact[x], exact[y]) for x, y in b], [(exact[x], exact[y]) for x, y in a]) for b, a in rows]
+
+
+__all__ = ["CORE_FLAGS", "FLAG_BITS", "StepLemma", "checked", "extra_flags", "find", "register", "registered"]

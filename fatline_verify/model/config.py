@@ -17,11 +17,12 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
-from ..errors import InvalidModel, Unsupported
+from ..errors import InvalidModel
 from ..lemmas.properties import CHECKED
 from ..outputs import SLUG, NotReadable, read_regular
 from .numbers import MAX_DIGITS, Number, Point, format_number, normalize, parse_number
 from .options import Options, Scheduler, Visibility, is_repaired, options_from_mapping
+from .seams import Settings, Value, declared, filled, parse_table
 
 MODELS_DIR = Path(__file__).parent.parent / "models"
 """Where the shipped model files live (``models/`` at the top of the repository links here)."""
@@ -106,6 +107,9 @@ class Model:
     """The rule set (:mod:`fatline_verify.rules.registry`). Left empty, or one of the paper's two, it is
     :func:`implied_rules`: ``repaired`` where a repair option is on, else ``paper`` (the repaired rules
     with every repair off decide as the paper's)."""
+    settings: Settings = ()
+    """The values of the parameters its scheduler and its rule set declare (:mod:`.seams`), per seam,
+    as the model file set them (defaults filled); read them with :meth:`setting`."""
 
     def __post_init__(self) -> None:
         if self.rules in IMPLIED:
@@ -121,6 +125,13 @@ class Model:
         if path.resolve() == (MODELS_DIR / f"{self.name}.toml").resolve():
             return self.name
         return self.source
+
+    def setting(self, seam: str) -> dict[str, Value]:
+        """The parameters of this model's scheduler (``seam="scheduler"``) or rule set (``"rules"``):
+        every one its registered object declares, with the model's value or else the default; empty
+        for one that declares none (the paper's)."""
+        given = dict(next((values for name, values in self.settings if name == seam), ()))
+        return filled(declared(seam_owner(self, seam)), given)
 
     def with_q(self, q: int) -> Model:
         """The same model on a lattice of ``q`` points per radius (every other parameter kept)."""
@@ -179,10 +190,30 @@ class Model:
         )
         steps = f", async_steps={p.async_steps}" if self.options.scheduler is Scheduler.ASYNC else ""
         rules = "" if self.rules in IMPLIED else f"rules={self.rules}, "
+        own = "".join(
+            f"; {seam} " + ", ".join(f"{k}={v}" for k, v in values)
+            for seam, values in ((seam, self.setting(seam).items()) for seam in ("rules", "scheduler"))
+            if values
+        )
         return (
             f"{self.name}: {rules}rad_v={format_number(p.rad_v)}, q={p.q}, delta={format_number(p.delta)}{steps}; "
-            f"{readings}"
+            f"{readings}{own}"
         )
+
+
+def seam_owner(model: Model, seam: str, scheduler: str | None = None) -> Any:
+    """The registered object whose parameters the ``seam`` table sets: the model's round scheduler
+    (``scheduler``: another one's name) or its rule set; ``None`` for ASYNC, which declares none."""
+    if seam == "rules":
+        from ..rules import registry
+
+        return registry.of(model)
+    name = str(scheduler or model.options.scheduler)
+    if name == Scheduler.ASYNC.value:
+        return None
+    from ..schedulers.activation import round_scheduler
+
+    return round_scheduler(name)
 
 
 IMPLIED = ("", "paper", "repaired")
@@ -196,7 +227,7 @@ def implied_rules(options: Options) -> str:
     return "repaired" if is_repaired(options) else "paper"
 
 
-_TOP_KEYS = {"name", "description", "rules", "parameters", "options", "bounds", "expected"}
+_TOP_KEYS = {"name", "description", "rules", "parameters", "options", "bounds", "expected", "scheduler"}
 _LEMMAS = tuple(lemma.value for lemma in CHECKED)
 _VERDICTS = ("VIOLATED", "HOLDS_WITHIN_BOUNDS", "PROVED", "INCONCLUSIVE")
 _PARAM_KEYS = {"rad_v", "q", "delta", "async_steps"}
@@ -256,16 +287,18 @@ def model_from_mapping(data: dict[str, object], *, source: str = "", default_nam
             params[key] = params_raw[key]
     parameters = Parameters(**params)  # type: ignore[arg-type]
     options = options_from_mapping(data.get("options", {}))  # type: ignore[arg-type]
-    rules = _rules(data.get("rules"), options, data.get("options", {}))  # type: ignore[arg-type]
+    rules_raw, rules_table = data.get("rules"), None
+    if isinstance(rules_raw, dict):  # [rules]: the rule set's name, then its own parameters
+        rules_table = {k: v for k, v in rules_raw.items() if k != "name"}
+        rules_raw = rules_raw.get("name")
+        if not isinstance(rules_raw, str):
+            raise InvalidModel(f"rules.name={rules_raw!r}: expected the name of a rule set in the [rules] table")
+    rules = _rules(rules_raw, options, data.get("options", {}))  # type: ignore[arg-type]
     if not isinstance(options.scheduler, Scheduler):
-        from ..schedulers.activation import ROUND_SCHEDULERS, round_scheduler
+        from ..schedulers.activation import scheduler_named
 
-        try:
-            round_scheduler(options.scheduler)
-        except Unsupported:
-            known = ", ".join([*ROUND_SCHEDULERS, Scheduler.ASYNC.value])
-            name = str(options.scheduler)
-            raise InvalidModel(f"options.scheduler={name!r}: unknown scheduler; expected one of {known}") from None
+        scheduler_named(str(options.scheduler))  # a registered one, or one line naming every scheduler
+    settings = _settings(rules, options, data.get("scheduler"), rules_table)
     bounds_raw = data.get("bounds", {})
     if not isinstance(bounds_raw, dict):
         raise InvalidModel(f"bounds={bounds_raw!r}: expected a table")
@@ -295,7 +328,24 @@ def model_from_mapping(data: dict[str, object], *, source: str = "", default_nam
     description = data.get("description", "")
     if not isinstance(description, str):
         raise InvalidModel(f"description={description!r}: expected a string")
-    return Model(name, options, parameters, bounds, description, source, dict(expected_raw), rules=rules)
+    return Model(
+        name, options, parameters, bounds, description, source, dict(expected_raw), rules=rules, settings=settings
+    )
+
+
+def _settings(rules: str, options: Options, scheduler_table: object, rules_table: object) -> Settings:
+    """The ``[scheduler]`` and ``[rules]`` tables, checked against what the model's scheduler and rule
+    set declare (:mod:`.seams`): every declared parameter's value, defaults filled."""
+    probe = Model(options=options, rules=rules)
+    out = []
+    for seam, table in (("scheduler", scheduler_table), ("rules", rules_table)):
+        owner = seam_owner(probe, seam)
+        name = str(options.scheduler) if seam == "scheduler" else rules
+        what = f"scheduler {name!r}" if seam == "scheduler" else f"rule set {name!r}"
+        values = parse_table(seam, what, declared(owner), table)
+        if values:
+            out.append((seam, values))
+    return tuple(out)
 
 
 def _rules(raw: object, options: Options, given: dict[str, object]) -> str:
@@ -379,9 +429,16 @@ def model_to_mapping(model: Model) -> dict[str, object]:
     if model.options.scheduler is Scheduler.ASYNC:  # means nothing under a round scheduler
         parameters["async_steps"] = p.async_steps
     out: dict[str, object] = {"name": model.name}
-    if model.rules != implied_rules(model.options):
+    own = model.setting("rules")
+    if own:  # the [rules] table: the name, then the rule set's own parameters
+        out["rules"] = {"name": model.rules, **own}
+    elif model.rules != implied_rules(model.options):
         out["rules"] = model.rules
-    return {**out, "parameters": parameters, "options": declared_options(model)}
+    out |= {"parameters": parameters, "options": declared_options(model)}
+    scheduler = model.setting("scheduler")
+    if scheduler:
+        out["scheduler"] = scheduler
+    return out
 
 
 def declared_options(model: Model) -> dict[str, str]:

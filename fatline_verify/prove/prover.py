@@ -29,7 +29,7 @@ from ..fresh import isolated, run_fresh
 from ..lemmas.properties import Lemma, Verdict
 from ..model.config import Model
 from ..model.swarm import initial_problems
-from ..schedulers.activation import round_scheduler
+from ..schedulers.activation import scheduler_for
 from ..schedulers.round import play_round
 from ..trace.simulate import Outcome, Run
 from ..trace.traces import replayed_document
@@ -110,7 +110,7 @@ def prove_global(model: Model, *, slots: int, timeout: float, out: Path | None) 
         state = ((0, 0), *(model.to_lattice(p) for p in ans.positions))
         index = [0] + [1 + sum(present[:i]) for i in range(k)]  # state index of r and of each slot
         active = [index[i] for i in range(k + 1) if active_flags[i] and (i == 0 or present[i - 1])]
-        if round_scheduler(model.options.scheduler).forbids(tuple(active), len(state)) is not None:
+        if scheduler_for(model).forbids(tuple(active), len(state)) is not None:
             return result(
                 Verdict.INCONCLUSIVE, k, f"encoding disagreement: activation set {active} breaks the scheduler"
             )

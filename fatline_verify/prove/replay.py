@@ -18,7 +18,7 @@ from ..model.options import Scheduler
 from ..model.swarm import initial_problems
 from ..rules.paper.algorithm import Band, Decision
 from ..rules.paper.cases import case_of
-from ..schedulers.activation import round_scheduler
+from ..schedulers.activation import scheduler_for
 from ..schedulers.round import Collision, decide_all, lost_edges, play_round
 from ..trace.simulate import Outcome, Run, outcome_after
 from ..trace.traces import initial_radii, replayed_document
@@ -87,7 +87,7 @@ def replay(model: Model, spec: Spec, positions: dict[str, tuple[Fraction, Fracti
     if form == ONE_MOVER and fsync and other not in spec.other:
         return f"the robot at rest decides {other.name}, and moves"
     active = list(range(len(state))) if fsync else [0, j] if form == TWO_MOVERS else [0]
-    if round_scheduler(model.options.scheduler).forbids(tuple(active), len(state)) is not None:
+    if scheduler_for(model).forbids(tuple(active), len(state)) is not None:
         return f"activation {active} is not a round of the scheduler"
     result = play_round(state, active, model, decisions)
     if spec.lemma is Lemma.NO_COLLISION:

@@ -61,7 +61,7 @@ from ..model.swarm import is_goal
 from ..rules.paper.algorithm import ORIGIN, Decision, Rule
 from ..rules.repaired.algorithm import allowed, locked
 from ..rules.repaired.options import RepairLock, RepairProgress
-from ..schedulers.activation import round_scheduler
+from ..schedulers.activation import scheduler_for
 from ..schedulers.round import closest_dist2, collides, collisions, disconnection, play_round, rma_violations, snapshot
 
 State = tuple[Point, ...]
@@ -510,7 +510,7 @@ def unit_legs(model: Model) -> tuple[Point, ...]:
 def alone(model: Model) -> bool:
     """Whether the model's scheduler may activate one robot alone (what :func:`universal_deadlock` needs):
     SSYNC and centralized, not FSYNC (the scheduler object says: :attr:`RoundScheduler.alone`)."""
-    return round_scheduler(model.options.scheduler).alone
+    return scheduler_for(model).alone
 
 
 def universal_deadlock(state: State, model: Model) -> list[tuple[int, Point, str]] | None:

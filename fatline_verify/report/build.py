@@ -31,8 +31,7 @@ from typing import Any
 from ..check.checker import check, check_fingerprint, check_to_json, write_witnesses
 from ..errors import FatlineError, InvalidInput, InvalidTrace, OutputFailed, TraceDidNotReproduce
 from ..integrity import seal, sealed
-from ..lemmas.properties import CHECKED
-from ..lemmas.registry import registered
+from ..lemmas.registry import checked as checked_lemmas
 from ..model.config import Model, load_model, model_from_mapping, model_to_mapping, shipped_models
 from ..outputs import (
     FILE_NAME,
@@ -133,7 +132,7 @@ def read_check_cache(cache: Path) -> dict[str, Any] | None:
     window = data.get("window")
     if not (isinstance(window, list) and len(window) == 2 and all(type(v) is int for v in window)):
         raise InvalidInput(f"{where}: window={str(window)[:40]!r}: expected [width, height]")
-    names = {lemma.value for lemma in CHECKED} | {lemma.name for lemma in registered()}  # a plug-in's too
+    names = {lemma.value for lemma in checked_lemmas()}  # the plug-ins' step lemmas too
     for k, row in enumerate(lemmas):
         at = f"{where}: lemmas[{k}]"
         if not isinstance(row, dict):

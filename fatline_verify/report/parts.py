@@ -16,6 +16,7 @@ from ..lemmas.properties import PROVED_LEMMAS
 from ..model.config import IMPLIED
 from ..model.options import CATALOGUE
 from ..prove.coverage import LemmaVerdict, lemma_verdicts
+from ..schedulers.activation import round_scheduler
 from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, violation_line
 from .data import ModelReport
 
@@ -126,6 +127,15 @@ def readings_text(report: ModelReport) -> str:
     return ", ".join(f"{k}={v}" for k, v in diff.items()) or _own_rules(report) or "every default reading"
 
 
+def meaning(name: str, value: str) -> str:
+    """What reading ``value`` of option ``name`` means: the catalogue's words, or for a registered
+    scheduler of one's own (a plug-in) the first line of its class's docstring."""
+    if value in CATALOGUE[name].readings:
+        return CATALOGUE[name].readings[value]
+    doc = (type(round_scheduler(value)).__doc__ or "").strip() if name == "scheduler" else ""
+    return doc.splitlines()[0] if doc else f"{name}={value}"
+
+
 def readings_html(report: ModelReport, root: str, sep: str = ", ") -> str:
     """The model's readings, each linked to its entry in the catalogue, its meaning on hover."""
     docs = html.escape(root + DOCS_LINK)
@@ -136,7 +146,7 @@ def readings_html(report: ModelReport, root: str, sep: str = ", ") -> str:
     if not diff:
         return f'<a href="{docs}">every default reading</a>'
     return sep.join(
-        f'<a href="{docs}#{html.escape(k)}" title="{html.escape(CATALOGUE[k].readings[v])}">'
+        f'<a href="{docs}#{html.escape(k)}" title="{html.escape(meaning(k, v))}">'
         f"<code>{html.escape(k)}=<wbr>{html.escape(v)}</code></a>"
         for k, v in diff.items()
     )

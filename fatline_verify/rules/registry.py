@@ -21,6 +21,7 @@ from typing import Any
 
 from ..errors import InvalidModel
 from ..lemmas.properties import CHECKED, SAFETY, Lemma
+from ..model.seams import Param
 
 Model = Any
 """A :class:`fatline_verify.model.config.Model` (not imported: the model package imports this one)."""
@@ -197,6 +198,10 @@ class RuleSet:
                     f"some of {', '.join(sorted(step)) or 'none'}"
                 )
 
+    parameters: dict[str, Param] = field(default_factory=dict, repr=False, compare=False)
+    """Parameters of its own (:mod:`fatline_verify.model.seams`), set in a model file's ``[rules]``
+    table; its decision function reads their values as ``model.setting("rules")``."""
+
     def accepts(self, option: str) -> bool:
         """Whether a model of this rule set may set ``option``."""
         return option in MODEL_OPTIONS or option in self.options
@@ -215,6 +220,7 @@ def register(rule_set: RuleSet) -> RuleSet:
     if known is not None and known != rule_set:
         raise ValueError(f"rule set {rule_set.name!r} is registered twice")
     _REGISTRY[rule_set.name] = rule_set
+    claim("rules", rule_set.name)
     return rule_set
 
 
@@ -230,18 +236,58 @@ def _load(*, plugins: bool = True) -> None:
         load_plugins()
 
 
+@dataclass(frozen=True, slots=True)
+class Provider:
+    """The installed distribution whose entry point registered a plug-in (as ``importlib.metadata``
+    names it): what a trace records, and what replay asks for when the plug-in is missing."""
+
+    distribution: str
+    version: str
+
+    def __str__(self) -> str:
+        return f"{self.distribution} {self.version}"
+
+
+_PROVIDERS: dict[tuple[str, str], Provider] = {}
+"""``(kind, name) -> Provider`` for everything an entry point registered; kind is ``"rules"``,
+``"lemma"`` or ``"scheduler"``."""
+
+_loading: list[Provider] = []
+"""The distribution whose entry point is being loaded (what :func:`claim` attributes to)."""
+
+
+def claim(kind: str, name: str) -> None:
+    """Called by each registry's ``register``: remember that the entry point being loaded, if any,
+    registered the ``kind`` called ``name``."""
+    if _loading:
+        _PROVIDERS.setdefault((kind, name), _loading[-1])
+
+
 def load_plugins() -> None:
-    """Import every ``fatline.plugins`` entry point (a module registers on import; a callable is called)."""
+    """Import every ``fatline.plugins`` entry point (a module registers on import; a callable is called),
+    and remember which distribution registered what (:func:`provider`)."""
     from importlib import metadata  # a twentieth of a second to import: only when plug-ins are asked for
 
     for ep in metadata.entry_points(group=GROUP):
+        dist = ep.dist
+        _loading.append(Provider(dist.name, dist.version) if dist is not None else Provider(ep.value.split(".")[0], ""))
         try:
-            obj = ep.load()
-        except Exception as exc:  # a broken plug-in is named, not a traceback
-            why = f"{exc.__class__.__name__}: {exc}"[:200]
-            raise InvalidModel(f"plugin {ep.name}={ep.value!r}: cannot be loaded ({why})") from None
-        if callable(obj):
-            obj()
+            try:
+                obj = ep.load()
+            except Exception as exc:  # a broken plug-in is named, not a traceback
+                why = f"{exc.__class__.__name__}: {exc}"[:200]
+                raise InvalidModel(f"plugin {ep.name}={ep.value!r}: cannot be loaded ({why})") from None
+            if callable(obj):
+                obj()
+        finally:
+            _loading.pop()
+
+
+def provider(kind: str, name: str) -> Provider | None:
+    """The installed distribution that registered the ``kind`` (``"rules"``, ``"lemma"``,
+    ``"scheduler"``) called ``name``; ``None`` for this package's own and for one registered in
+    process (a test's)."""
+    return _PROVIDERS.get((kind, name))
 
 
 def names() -> tuple[str, ...]:
@@ -303,8 +349,10 @@ __all__ = [
     "Decide",
     "Encoding",
     "Liveness",
+    "Provider",
     "RuleSet",
     "applies",
+    "claim",
     "decide",
     "decider",
     "encoding_of",
@@ -313,6 +361,7 @@ __all__ = [
     "load_plugins",
     "names",
     "of",
+    "provider",
     "register",
     "register_encoding",
 ]

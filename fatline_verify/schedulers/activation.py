@@ -12,12 +12,13 @@ registry entry. (ASYNC is not a round scheduler: its steps are single look-compu
 from __future__ import annotations
 
 import random
-from typing import Protocol
+from typing import Any, Protocol
 
 import numpy as np
 
-from ..errors import Unsupported
-from ..model.options import Scheduler
+from ..errors import InvalidModel, Unsupported
+from ..model.options import Scheduler, SchedulerName, parse_reading
+from ..model.seams import declared, filled
 
 
 class RoundScheduler(Protocol):
@@ -49,6 +50,9 @@ class RoundScheduler(Protocol):
         """A fair random choice among the enabled ``candidates`` (non-empty); ``waiting[i]`` counts the
         rounds robot ``i`` has been enabled but idle. No enabled robot waits more than ``n`` rounds."""
         ...
+
+    # Optional, for a scheduler with parameters of its own (:mod:`fatline_verify.model.seams`):
+    # ``parameters: dict[str, Param]`` and ``configured(**values) -> RoundScheduler``.
 
 
 def _subsets(enabled: int) -> list[int]:
@@ -153,7 +157,12 @@ def register(scheduler: RoundScheduler) -> RoundScheduler:
         raise ValueError(f"scheduler {name!r}: the paper's scheduler of that name cannot be replaced")
     if scheduler.encoded:
         raise ValueError(f"scheduler {name!r}: encoded=True, but the prover's obligations encode no plug-in")
+    if declared(scheduler) and not callable(getattr(scheduler, "configured", None)):
+        raise ValueError(f"scheduler {name!r}: declares parameters but no configured(**values) to take them")
     ROUND_SCHEDULERS.setdefault(name, scheduler)
+    from ..rules import registry
+
+    registry.claim("scheduler", name)  # the plug-in package registering it, if any
     return ROUND_SCHEDULERS[name]
 
 
@@ -171,9 +180,41 @@ def round_scheduler(kind: Scheduler | str) -> RoundScheduler:
     return found
 
 
+def scheduler_for(model: Any, kind: Scheduler | str | None = None) -> RoundScheduler:
+    """The round scheduler ``model`` plays rounds under (or ``kind``), with the values the model sets for
+    the parameters it declares (``configured(**values)``; defaults for another ``kind`` than the model's)."""
+    found = round_scheduler(kind or model.options.scheduler)
+    params = declared(found)
+    if not params:
+        return found
+    own = kind is None or str(kind) == str(model.options.scheduler)
+    return found.configured(**(model.setting("scheduler") if own else filled(params, {})))  # type: ignore[attr-defined, no-any-return]
+
+
+def scheduler_named(name: str, where: str = "options.scheduler") -> Scheduler | SchedulerName:
+    """The scheduler called ``name``: one of the paper's or a registered one (plug-ins loaded), or a
+    one-line :class:`InvalidModel` naming ``where`` and every scheduler there is."""
+    try:
+        reading = parse_reading("scheduler", name)
+        if not isinstance(reading, Scheduler):
+            round_scheduler(reading)
+        return reading  # type: ignore[return-value]
+    except (InvalidModel, Unsupported):
+        known = ", ".join([*ROUND_SCHEDULERS, Scheduler.ASYNC.value])
+        raise InvalidModel(f"{where}={name!r}: unknown scheduler; expected one of {known}") from None
+
+
 def encoded_schedulers() -> tuple[Scheduler, ...]:
     """The schedulers whose rounds the prover's obligations encode."""
     return tuple(s.kind for s in ROUND_SCHEDULERS.values() if s.encoded)
 
 
-__all__ = ["ROUND_SCHEDULERS", "RoundScheduler", "encoded_schedulers", "register", "round_scheduler"]
+__all__ = [
+    "ROUND_SCHEDULERS",
+    "RoundScheduler",
+    "encoded_schedulers",
+    "register",
+    "round_scheduler",
+    "scheduler_for",
+    "scheduler_named",
+]

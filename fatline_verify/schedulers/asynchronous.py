@@ -46,7 +46,7 @@ from ..model.options import Motion, Scheduler
 from ..model.swarm import State, is_goal
 from ..rules.paper.algorithm import Decision
 from ..rules.registry import decider
-from .base import Codec, Marks
+from .base import Codec, Expansion, Marks
 from .round import Violation, claimed, collisions, disconnection, global_path, rma_violations, snapshot
 from .rounds import MAX_SCHEDULE_STEPS
 
@@ -391,6 +391,28 @@ class AsyncSystem:
     def array_positions(self, states: np.ndarray) -> np.ndarray:
         pos, _ = current_positions(states, self.K)
         return pos
+
+    def step_positions(self, states: np.ndarray, ex: Expansion) -> tuple[np.ndarray, np.ndarray, int]:
+        """An event's positions in units of ``1/K^2`` lattice unit, where every move step lands: a look
+        or a stop moves no robot; a move step takes its robot one ``1/K`` of its path further (also to a
+        point off the ``K``-times finer lattice, a successor that is counted but not explored), as
+        :meth:`play` does. The event's robot is the action code's lowest bit (a stop adds bit ``n``)."""
+        K, n = self.K, states.shape[1]
+        pos, _ = current_positions(states, K)
+        before = pos[ex.src] * K
+        after = before.copy()
+        code = ex.action & ((1 << n) - 1)
+        robot = np.rint(np.log2(np.maximum(code & -code, 1))).astype(np.int64)
+        source = states[ex.src, robot]  # (t, 6): the event's robot in its source
+        moving = (source[:, 0:2] != source[:, 2:4]).any(axis=1)
+        step = np.flatnonzero(moving & ((ex.action >> n) & 1 == 0))
+        if len(step):
+            fine = source[step].copy()
+            fine[:, 0:4] *= K  # the path in units of 1/K^2: every step's end is a whole number of them
+            fine[:, 5] += 1
+            moved, _ = current_positions(fine[:, None, :], K)
+            after[step, robot[step]] = moved[:, 0]
+        return before, after, K * K
 
     default_engine = "compiled"
     """The engine ``check`` uses unless told otherwise (:mod:`fatline_verify.check.compiled_async`)."""

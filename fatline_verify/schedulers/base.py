@@ -289,6 +289,14 @@ class TransitionSystem(Protocol):
     scale: int
     """How many array units make one base lattice unit."""
 
+    def step_positions(self, states: np.ndarray, ex: Expansion) -> tuple[np.ndarray, np.ndarray, int]:
+        """Every transition of ``ex`` (expanded from ``states``) as the executable model plays it: the
+        positions before and after the step, ``(t, n, 2)`` integers in units of the base lattice
+        divided by the returned unit, robots in the source's order. Exact for every transition, also
+        one whose successor is off the lattice (``ex.after`` is meaningless there): the registered step
+        lemmas are judged on these (:func:`fatline_verify.lemmas.registry.extra_flags`)."""
+        ...
+
 
 ENGINES = ("compiled", "fast", "scalar")
 """The engine names (:func:`fatline_verify.check.engines.engine_for`); a system may lack some."""

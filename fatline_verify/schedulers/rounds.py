@@ -9,6 +9,7 @@ its code is the set's bitmask. The array form is ``(x, y)`` per robot on the mod
 
 from __future__ import annotations
 
+import math
 import random
 import re
 from collections.abc import Sequence
@@ -22,8 +23,8 @@ from ..model.config import Model
 from ..model.lattice import canonical, key_codec
 from ..model.options import Scheduler
 from ..model.swarm import State, is_goal
-from .activation import RoundScheduler, round_scheduler
-from .base import Codec, Marks
+from .activation import RoundScheduler, scheduler_for
+from .base import Codec, Expansion, Marks
 from .round import RoundResult, decide_all, enabled, global_path, play_round
 
 MAX_SCHEDULE_STEPS = 1_000_000
@@ -50,7 +51,7 @@ class RoundSystem:
     def __init__(self, model: Model, kind: Scheduler) -> None:
         self.model = model
         self.kind = kind
-        self.rounds: RoundScheduler = round_scheduler(kind)
+        self.rounds: RoundScheduler = scheduler_for(model, kind)
 
     # --- executable side -------------------------------------------------------------------------
     def start(self, positions: State) -> State:
@@ -192,6 +193,25 @@ class RoundSystem:
 
     def array_positions(self, states: np.ndarray) -> np.ndarray:
         return states
+
+    def step_positions(self, states: np.ndarray, ex: Expansion) -> tuple[np.ndarray, np.ndarray, int]:
+        """A round's positions before and after, in units of ``1/unit`` lattice unit: the successor itself
+        where it is on the lattice (``unit`` 1); where a rule set's rational destination left it (``exact``
+        false: the successor is counted, not explored), the executable round's exact positions, all of the
+        batch scaled by the least common denominator (never the engine's blank row)."""
+        before, after = states[ex.src], ex.after
+        inexact = np.flatnonzero(~np.asarray(ex.exact, dtype=bool))
+        if not len(inexact):
+            return before, after, 1
+        exact: dict[int, State] = {}
+        for t in inexact.tolist():
+            _, steps = self.successors(self.from_array(states[ex.src[t]]))
+            exact[t] = next(step.target for code, step in steps if code == ex.action[t])
+        unit = math.lcm(*(Fraction(c).denominator for target in exact.values() for p in target for c in p))
+        before, after = before * unit, after * unit
+        for t, target in exact.items():
+            after[t] = [[int(Fraction(c) * unit) for c in p] for p in target]
+        return before, after, unit
 
     default_engine = "compiled"
     """The engine ``check`` uses unless told otherwise."""

@@ -23,13 +23,15 @@ from typing import Any
 
 import jsonschema
 
-from ..errors import FatlineError, InvalidInput, InvalidTrace, TraceDidNotReproduce
+from ..errors import FatlineError, InvalidInput, InvalidTrace, TraceDidNotReproduce, Unsupported
 from ..lemmas import registry as lemma_registry
 from ..lemmas.properties import SAFETY, Lemma
 from ..model.config import Model, model_from_mapping, model_to_mapping
 from ..model.numbers import Point, parse_number
+from ..model.options import Scheduler
 from ..model.swarm import State
 from ..outputs import NotReadable, parse_json, read_regular, write_json
+from ..rules import registry as rules_registry
 from ..schedulers.base import Step
 from ..schedulers.round import lost_edges
 from ..schedulers.systems import TransitionSystem, system_for
@@ -67,9 +69,67 @@ def run_to_json(run: Run, origin: dict[str, Any] | None = None, focus: str | Non
         "loop_start": run.loop_start,
         "violation": derive_violation(run, rounds, focus),
     }
+    used = plugins_used(model, doc["violation"]["property"] if doc["violation"] else None)
+    if used:
+        doc["plugins"] = used
     if origin:
         doc["origin"] = origin
     return doc
+
+
+def plugins_used(model: Model, lemma: str | None) -> list[dict[str, str]]:
+    """The plug-ins a trace of ``model`` witnessing ``lemma`` needs to be replayed: its rule set, its
+    scheduler and its lemma where an installed package's entry point registered them, each with that
+    package's distribution name and version (``importlib.metadata``)."""
+    used = [("rules", model.rules), ("scheduler", str(model.options.scheduler))]
+    if lemma is not None:
+        used.append(("lemma", lemma))
+    out = []
+    for kind, name in used:
+        found = rules_registry.provider(kind, name)
+        if found is not None:
+            out.append({"kind": kind, "name": name, "distribution": found.distribution, "version": found.version})
+    return out
+
+
+def require_plugins(doc: dict[str, Any], where: str = "trace") -> None:
+    """Every plug-in ``doc`` records (``plugins``) is registered here, or one :class:`InvalidTrace`
+    line naming the first missing one and the package to install; a lemma the trace witnesses must
+    be known (the paper's or a registered one) even when the trace records no plug-in."""
+    known = {
+        "rules": lambda name: name in rules_registry.names(),
+        "scheduler": _scheduler_known,
+        "lemma": lambda name: lemma_registry.find(name) is not None,
+    }
+    for entry in doc.get("plugins", ()):
+        kind, name = entry["kind"], entry["name"]
+        if not known[kind](name):
+            dist, version = entry["distribution"], entry["version"]
+            package = f"{dist}=={version}" if version else dist
+            raise InvalidTrace(
+                f"{where}: {kind} {name!r} is a plug-in that is not installed; expected its package "
+                f"installed: pip install '{package}'"
+            )
+    focus = doc["violation"]["property"] if doc.get("violation") else None
+    if focus is not None and focus not in {m.value for m in Lemma} and lemma_registry.find(focus) is None:
+        names = [*(m.value for m in Lemma), *(m.name for m in lemma_registry.registered())]
+        raise InvalidTrace(
+            f"{where}: violation.property={focus!r}: unknown lemma; expected one of {', '.join(names)} "
+            "(a plug-in's lemma: install its package)"
+        )
+
+
+def _scheduler_known(name: str) -> bool:
+    """Whether ``name`` is a scheduler here: ASYNC or a registered round scheduler (plug-ins loaded)."""
+    from ..schedulers.activation import round_scheduler
+
+    if name == Scheduler.ASYNC.value:
+        return True
+    try:
+        round_scheduler(name)
+    except Unsupported:
+        return False
+    return True
 
 
 def approach_stuck(run: Run) -> list[int]:
@@ -190,6 +250,7 @@ def load_trace(path: str | Path) -> dict[str, Any]:
     except ValueError as exc:
         raise InvalidTrace(f"trace={str(p)!r}: {exc}; expected a trace JSON file") from None
     validate(doc, where=str(p))
+    require_plugins(doc, where=str(p))
     return doc  # type: ignore[no-any-return]
 
 

@@ -21,7 +21,12 @@ def install_site(monkeypatch: pytest.MonkeyPatch) -> Iterator[Callable[[Path], N
     from fatline_verify.schedulers import activation
 
     lemmas.registered()  # the package's own, loaded before the snapshot
-    registries: tuple[dict[str, Any], ...] = (registry._REGISTRY, lemmas._REGISTRY, activation.ROUND_SCHEDULERS)
+    registries: tuple[dict[Any, Any], ...] = (
+        registry._REGISTRY,
+        lemmas._REGISTRY,
+        activation.ROUND_SCHEDULERS,
+        registry._PROVIDERS,
+    )
     saved = [(reg, dict(reg)) for reg in registries]
 
     def install(site: Path) -> None:

@@ -93,7 +93,11 @@ def test_the_digest_follows_the_plugin_s_files_and_nothing_else(
     assert len(first) == 64 and provenance.reusable(first)
     assert provenance.plugin_digest(toy) == first
     names = {what: provenance._module_of(obj) for what, obj in provenance.deciders(toy)}
-    assert names == {"rules": "toy_fatline_plugin", "lemma no-left": "toy_fatline_plugin.lemma"}
+    assert names == {
+        "rules": "toy_fatline_plugin",
+        "lemma no-left": "toy_fatline_plugin.lemma",
+        "lemma no-down": "toy_fatline_plugin.down",
+    }
     # the plug-in's lemma decides for a built-in model too
     assert provenance.plugin_digest(paper) not in ("", first)
     # files outside the plug-in's package: its .dist-info, a module beside it

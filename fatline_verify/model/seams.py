@@ -1,0 +1,111 @@
+"""The parameters a registered scheduler or rule set declares of its own ("at most ``k`` robots a
+round"), set in a model file in a table named after its seam, validated, and carried in the model's
+data (so into its fingerprint and its traces).
+
+A registered round scheduler declares them as ``parameters: dict[str, Param]`` and provides
+``configured(**values)``, the scheduler with those values (its methods take no model); a rule set
+declares them as ``RuleSet(..., parameters={...})`` and its decision function reads
+``model.setting("rules")``. One without ``parameters`` takes none, as before. In a model file::
+
+    [options]
+    scheduler = "pairs"
+
+    [scheduler]     # the scheduler's own parameters
+    k = 3
+
+    [rules]         # the rule set's: its name, then its own parameters
+    name = "toy-step"
+    reach = 4
+
+(``rules = "toy-step"``, a string, names a rule set with its defaults, as before: TOML has no key
+that is both a string and a table.) An unknown key or a value of the wrong type is one line, before
+any work. ``fatline explain`` and ``fatline sweep`` do not see these parameters yet.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from ..errors import InvalidModel
+
+Value = int | bool | str
+"""What a parameter holds: its default's type."""
+
+SEAMS = ("scheduler", "rules")
+"""The seams whose registered objects may declare parameters, by their table's name."""
+
+Settings = tuple[tuple[str, tuple[tuple[str, Value], ...]], ...]
+"""A model's values, per seam, every declared parameter (defaults filled), in declaration order."""
+
+
+@dataclass(frozen=True, slots=True)
+class Param:
+    """One declared parameter: its default (whose type, ``int``, ``bool`` or ``str``, is the
+    parameter's), what it means, and for an integer its least and greatest value."""
+
+    default: Value
+    doc: str
+    minimum: int | None = None
+    maximum: int | None = None
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.default, int | str):  # bool is an int
+            raise ValueError(f"Param default={self.default!r}: expected an int, a bool or a str")
+        if not isinstance(self.default, bool) and isinstance(self.default, int):
+            self.parse("default", self.default)
+
+    def expected(self) -> str:
+        """What a value must be, in words."""
+        if isinstance(self.default, bool):
+            return "true or false"
+        if isinstance(self.default, str):
+            return "a string"
+        lo, hi = self.minimum, self.maximum
+        if lo is not None and hi is not None:
+            return f"a whole number {lo}..{hi}"
+        if lo is not None:
+            return f"a whole number >= {lo}"
+        return f"a whole number <= {hi}" if hi is not None else "a whole number"
+
+    def parse(self, where: str, value: object) -> Value:
+        """``value`` checked against this parameter, or a one-line :class:`InvalidModel` naming ``where``."""
+        kind = bool if isinstance(self.default, bool) else type(self.default)
+        ok = type(value) is kind
+        if ok and kind is int:
+            assert isinstance(value, int)
+            ok = (self.minimum is None or value >= self.minimum) and (self.maximum is None or value <= self.maximum)
+        if not ok:
+            raise InvalidModel(f"{where}={value!r}: expected {self.expected()} ({self.doc})")
+        return value  # type: ignore[return-value]
+
+
+def declared(owner: Any) -> dict[str, Param]:
+    """The parameters ``owner`` (a registered scheduler or rule set) declares; none when it has no
+    ``parameters`` (a plug-in written before parameters existed)."""
+    found = getattr(owner, "parameters", None) or {}
+    if not isinstance(found, dict) or not all(isinstance(k, str) and isinstance(p, Param) for k, p in found.items()):
+        raise ValueError(f"{owner!r}: parameters must be a dict of name -> Param")
+    return found
+
+
+def parse_table(seam: str, what: str, params: dict[str, Param], raw: object) -> tuple[tuple[str, Value], ...]:
+    """The ``[seam]`` table of a model file (``raw``, ``None`` when absent) for ``what`` (``"scheduler
+    'pairs'"``), which declares ``params``: every declared parameter with its value or its default."""
+    if raw is None:
+        raw = {}
+    if not isinstance(raw, dict):
+        raise InvalidModel(f"{seam}={raw!r}: expected a table of the {what}'s parameters")
+    for key, value in raw.items():
+        if key not in params:
+            known = f"expected one of {', '.join(params)}" if params else f"the {what} takes no parameters"
+            raise InvalidModel(f"{seam}.{key}={value!r}: unknown key; {known}")
+    return tuple((key, p.parse(f"{seam}.{key}", raw[key]) if key in raw else p.default) for key, p in params.items())
+
+
+def filled(params: dict[str, Param], given: dict[str, Value]) -> dict[str, Value]:
+    """Every declared parameter's value: ``given``'s, else its default."""
+    return {key: given.get(key, p.default) for key, p in params.items()}
+
+
+__all__ = ["SEAMS", "Param", "Settings", "Value", "declared", "filled", "parse_table"]
