@@ -10,7 +10,7 @@ from typing import Any
 from ..errors import InvalidInput
 from ..junit import check_suites, claim_junit, write_junit
 from ..model.config import parse_robots, parse_window
-from ..outputs import Kind, claim_dir, claim_file, claim_files, write_json
+from ..outputs import Kind, Output, claim_dir, claim_file, claim_files, distinct_outputs, write_json
 from ..progress import Progress
 from ..resources import parse_size
 from ..schedulers.base import ENGINES
@@ -62,6 +62,15 @@ def cmd_check(args: argparse.Namespace) -> int:
     bound = parse_window(args.bound, error=InvalidInput, name="bound") if args.bound is not None else None
     max_memory = parse_size(args.max_memory) if args.max_memory is not None else None
     checkpoint = Path(args.checkpoint) if args.checkpoint is not None else None
+    distinct_outputs(
+        [
+            Output("json", json_path),
+            Output("junit", junit_path),
+            Output("traces", traces_dir, directory=True),
+            Output("checkpoint", checkpoint, directory=True),
+        ],
+        [("model", args.model)],
+    )
     check_workers(args.workers, args.cluster)
     plan = CheckPlan.of(
         model,

@@ -9,7 +9,7 @@ from typing import Any
 
 from ..junit import claim_junit, prove_suites, write_junit
 from ..lemmas.properties import PROVED_LEMMAS, Lemma
-from ..outputs import Kind, child, claim_dir, claim_file, claim_files, write_json
+from ..outputs import Kind, Output, child, claim_dir, claim_file, claim_files, distinct_outputs, write_json
 from ..progress import Progress
 from ..text import prove_lines
 from ..trace.traces import initial_radii, load_trace
@@ -68,6 +68,15 @@ def cmd_prove(args: argparse.Namespace) -> int:
     traces_dir = claim_dir(args.traces, name="traces") if args.traces is not None else out / "traces"
     json_path = claim_file(args.json, name="json", kind=Kind.PROVE, force=args.force) if args.json else None
     junit_path = claim_junit(args.junit, force=args.force) if args.junit else None
+    distinct_outputs(
+        [
+            Output("out", out, directory=True),
+            Output("traces", traces_dir, directory=True),
+            Output("json", json_path),
+            Output("junit", junit_path),
+        ],
+        [("model", args.model), *(("known", name) for name in args.known)],
+    )
     claim_files([out / "results.json"], name="out", kind=Kind.PROVE, force=args.force)
     store = ProofResults(model, out, traces_dir, slots=args.slots, timeout=args.timeout)
     if args.redo_inconclusive:

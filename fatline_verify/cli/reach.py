@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from ..outputs import Kind, claim_file, write_json
+from ..outputs import Kind, Output, claim_file, distinct_outputs, write_json
 from ..progress import Progress
 from .common import (
     EXIT_FOUND,
@@ -39,6 +39,7 @@ def cmd_reach(args: argparse.Namespace) -> int:
     refuse(model)
     lo, hi, window = family_bounds(args, model, BYTES_PER_START)
     json_path = claim_file(args.json, name="json", kind=Kind.REACH, force=args.force) if args.json else None
+    distinct_outputs([Output("json", json_path)], [("model", args.model)])
 
     results = []
     interrupted = False

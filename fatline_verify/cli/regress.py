@@ -25,7 +25,7 @@ from typing import Any
 from ..errors import FatlineError, InvalidInput, TraceDidNotReproduce
 from ..junit import Case, Outcome, Suite, claim_junit, totals, write_junit
 from ..model.config import Model
-from ..outputs import Kind, read_json
+from ..outputs import Kind, Output, distinct_outputs, read_json
 from ..progress import Progress
 from ..trace.traces import check_replay, differences, load_trace, replay, trace_model
 from .common import EXIT_FOUND, EXIT_OK, add_command, add_force, emit, model_arg, nonempty
@@ -124,6 +124,8 @@ def cmd_regress(args: argparse.Namespace) -> int:
     override = model_arg(args.model) if args.model is not None else None
     junit = claim_junit(args.junit, force=args.force) if args.junit is not None else None
     groups = [(arg, *collect(arg, override)) for arg in args.dirs]
+    traces = [("dir", entry.path) for _, entries, _ in groups for entry in entries]
+    distinct_outputs([Output("junit", junit)], [*traces, *([("model", args.model)] if args.model else [])])
     under = f" under {override.name}" if override is not None else ""
 
     suites: list[Suite] = []

@@ -8,7 +8,7 @@ from typing import Any
 
 from ..errors import InvalidInput
 from ..model.options import Scheduler
-from ..outputs import Kind, claim_file
+from ..outputs import Kind, Output, claim_file, distinct_outputs
 from ..schedulers.systems import system_for
 from ..text import plural, trace_lines
 from ..trace.simulate import Outcome, parse_schedule, play_schedule, simulate
@@ -46,6 +46,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     if args.schedule is not None:
         _random_only(args)
     trace = claim_file(args.trace, name="trace", kind=Kind.TRACE, force=args.force) if args.trace is not None else None
+    distinct_outputs([Output("trace", trace)], [("model", args.model)])
     model = model_arg(args.model)
     if args.q is not None:  # the lattice the repaired rules shorten their legs on (1/q radius)
         model = model.with_q(args.q)

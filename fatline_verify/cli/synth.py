@@ -7,7 +7,7 @@ import argparse
 from typing import Any
 
 from ..errors import InvalidInput
-from ..outputs import Kind, claim_file, write_json
+from ..outputs import Kind, Output, claim_file, distinct_outputs, write_json
 from ..progress import Progress
 from .common import (
     EXIT_FOUND,
@@ -63,6 +63,7 @@ def cmd_synth(args: argparse.Namespace) -> int:
     most = (MAX_ROBOTS, "every reachable configuration is in the formula")
     lo, hi, window = family_bounds(args, model, BYTES_PER_START, most)
     json_path = claim_file(args.json, name="json", kind=Kind.SYNTH, force=args.force) if args.json else None
+    distinct_outputs([Output("json", json_path)], [("model", args.model)])
 
     results = []
     interrupted = False
