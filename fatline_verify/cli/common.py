@@ -83,13 +83,25 @@ def cores() -> int:
         return os.cpu_count() or 1
 
 
-def check_workers(workers: int, cluster: str | None) -> None:
-    """Refuse (not cap), before any work, more local worker processes than this machine has cores:
-    they would only share the cores, each holding its own copy of the search."""
-    if cluster is None and workers > cores():
+def check_cores(name: str, value: int, why: str, instead: str = "") -> None:
+    """Refuse (not cap), before any work, ``--NAME VALUE`` processes or solvers at once above this machine's
+    cores: they would only share the cores; ``why`` says what that costs, ``instead`` what to do for more."""
+    if value > cores():
         raise InvalidInput(
-            f"workers={workers}: expected at most {cores()}, the cores of this machine (more processes than cores "
-            "only share them); for more, --cluster with the workers of several machines"
+            f"{name}={value}: expected at most {cores()}, the cores of this machine ({why})"
+            + (f"; {instead}" if instead else "")
+        )
+
+
+def check_workers(workers: int, cluster: str | None) -> None:
+    """``--workers`` of ``check`` and ``sweep``: local worker processes, each holding its own copy of the
+    search (a ``--cluster`` brings its own machines)."""
+    if cluster is None:
+        check_cores(
+            "workers",
+            workers,
+            "more processes than cores only share them",
+            "for more, --cluster with the workers of several machines",
         )
 
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import os
 import time
 from typing import Any
 
@@ -21,6 +20,8 @@ from .common import (
     add_command,
     add_force,
     add_model_argument,
+    check_cores,
+    cores,
     emit,
     integer,
     model_arg,
@@ -43,6 +44,12 @@ LIVENESS = "liveness"
 
 
 def cmd_prove(args: argparse.Namespace) -> int:
+    check_cores(
+        "jobs",
+        args.jobs,
+        "more solvers than cores only share them against each obligation's wall-clock budget, and rows that "
+        "prove alone come out INCONCLUSIVE",
+    )
     if args.with_ is not None:
         from .prove_whatif import cmd_prove_whatif
 
@@ -161,8 +168,8 @@ def register(sub: Any) -> None:
     p.add_argument(
         "--jobs",
         type=integer("jobs", 1, MAX_JOBS),
-        default=os.cpu_count() or 1,
-        help="obligations solved at once (default: the number of cores)",
+        default=cores(),
+        help="obligations solved at once, at most the number of cores (default: the number of cores)",
     )
     p.add_argument(
         "--out",
