@@ -24,7 +24,8 @@ EXIT_OK, EXIT_FOUND, EXIT_BAD, EXIT_INCONCLUSIVE, EXIT_INTERRUPTED = 0, 1, 2, 3,
 EPILOG = """exit codes:
   0    everything asked holds (check: every lemma HOLDS_WITHIN_BOUNDS; simulate: no violation and no
        deadlock; replay, regress: every trace reproduces)
-  1    a violation or deadlock was found, or a trace did not reproduce
+  1    a violation or deadlock was found, or a trace did not reproduce (replay, regress: or could not be
+       replayed under --model)
   2    bad input (malformed model, trace or argument) or an internal error
   3    check, prove and sweep: nothing violated, but some verdict is INCONCLUSIVE (a bound was hit)
   130  interrupted (Ctrl-C); what was finished is kept
