@@ -11,6 +11,7 @@ import math
 import os
 import re
 import sys
+import textwrap
 from collections.abc import Callable, Sequence
 from typing import Any, NoReturn
 
@@ -122,9 +123,25 @@ class Parser(argparse.ArgumentParser):
         raise ArgumentError(message)
 
 
-def add_command(sub: Any, name: str, help_text: str) -> Parser:
-    """A subcommand whose description is its help line."""
-    return sub.add_parser(name, help=help_text, description=help_text)  # type: ignore[no-any-return]
+def exit_codes(ok: str, found: str | None = None, inconclusive: str | None = None, kept: bool = False) -> str:
+    """One command's ``--help`` epilog: the exit codes it can return, each said for it (``found``: exit 1,
+    ``inconclusive``: exit 3; ``kept``: an interrupt keeps what was finished). Exit 2 and 130 come from
+    :func:`fatline_verify.cli.main` for every command."""
+    rows = [(EXIT_OK, ok), (EXIT_FOUND, found)]
+    rows += [(EXIT_BAD, "bad input (model, trace or argument: one line, before any work) or an internal error")]
+    rows += [(EXIT_INCONCLUSIVE, inconclusive)]
+    rows += [(EXIT_INTERRUPTED, "interrupted (Ctrl-C)" + ("; what was finished is kept" if kept else ""))]
+    lines = ["exit codes:"]
+    for code, text in rows:
+        if text is not None:
+            lines.append(textwrap.fill(text, 100, initial_indent=f"  {code:<5}", subsequent_indent=" " * 7))
+    return "\n".join(lines) + "\n"
+
+
+def add_command(sub: Any, name: str, help_text: str, exits: str) -> Parser:
+    """A subcommand whose description is its help line and whose epilog is its own exit codes (``exits``:
+    :func:`exit_codes`)."""
+    return sub.add_parser(name, help=help_text, description=help_text, epilog=exits)  # type: ignore[no-any-return]
 
 
 def add_model_argument(p: argparse.ArgumentParser, default: str = "paper") -> None:

@@ -8,6 +8,7 @@ from typing import Any
 from ..outputs import Kind, Output, claim_file, distinct_outputs, write_json
 from ..progress import Progress
 from .common import (
+    exit_codes,
     EXIT_FOUND,
     EXIT_INTERRUPTED,
     EXIT_OK,
@@ -68,8 +69,7 @@ def register(sub: Any) -> None:
     p = add_command(
         sub,
         "reach",
-        "whether any rule set whose moves are the repaired family's legs could bring each small swarm to a line",
-    )
+        "whether any rule set whose moves are the repaired family's legs could bring each small swarm to a line", exit_codes("every initial configuration can be brought to a line", "some configuration cannot (listed as stuck)", kept=True))
     add_model_argument(p, default=DEFAULT_MODEL)
     add_bounds(p)
     add_family_arguments(p)

@@ -28,7 +28,7 @@ from ..model.config import Model
 from ..outputs import Kind, Output, distinct_outputs, read_json
 from ..progress import Progress
 from ..trace.traces import check_replay, differences, load_trace, replay, trace_model
-from .common import EXIT_FOUND, EXIT_OK, add_command, add_force, emit, model_arg, nonempty
+from .common import exit_codes, EXIT_FOUND, EXIT_OK, add_command, add_force, emit, model_arg, nonempty
 from .replay import _same_model, not_reproduced
 
 OTHER_OUTPUTS = frozenset(k.value for k in Kind if k is not Kind.TRACE)
@@ -170,8 +170,7 @@ def register(sub: Any) -> None:
     p = add_command(
         sub,
         "regress",
-        "replay every trace of directories (e.g. reports/traces) for CI; --junit writes JUnit XML",
-    )
+        "replay every trace of directories (e.g. reports/traces) for CI; --junit writes JUnit XML", exit_codes("every trace reproduces", "a trace did not reproduce, or could not be replayed"))
     p.add_argument(
         "dirs",
         nargs="+",

@@ -22,7 +22,7 @@ from ..outputs import Kind, claim_dir, claim_files, write_text
 from ..text import plural, trace_lines
 from ..trace.simulate import Run
 from ..trace.traces import differences, load_trace, replay, run_to_json, trace_model
-from .common import EXIT_FOUND, EXIT_OK, add_command, add_force, emit, model_arg
+from .common import exit_codes, EXIT_FOUND, EXIT_OK, add_command, add_force, emit, model_arg
 
 
 def _same_model(doc: dict[str, Any], model: Model) -> bool:
@@ -158,7 +158,7 @@ def cmd_replay(args: argparse.Namespace) -> int:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "replay", "recompute traces from their initial positions and compare every recorded value")
+    p = add_command(sub, "replay", "recompute traces from their initial positions and compare every recorded value", exit_codes("every trace reproduces", "a trace did not reproduce, or could not be replayed under --model"))
     p.add_argument("traces", nargs="+", metavar="TRACE")
     p.add_argument(
         "--model",

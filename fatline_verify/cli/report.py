@@ -10,7 +10,7 @@ from ..errors import InvalidInput
 from ..model.config import shipped_models
 from ..outputs import Output, claim_dir, distinct_outputs
 from ..progress import Progress
-from .common import EXIT_OK, add_command, add_force, emit, integer, model_arg, nonempty, seconds
+from .common import exit_codes, EXIT_OK, add_command, add_force, emit, integer, model_arg, nonempty, seconds
 from .prove import DEFAULT_SLOTS, DEFAULT_TIMEOUT, MAX_SLOTS
 
 STEPS = ("check", "prove", "pictures")
@@ -59,8 +59,7 @@ def cmd_report(args: argparse.Namespace) -> int:
 
 def register(sub: Any) -> None:
     p = add_command(
-        sub, "report", "write per-model reports with pictures, the regression corpus and the readings x lemmas matrix"
-    )
+        sub, "report", "write per-model reports with pictures, the regression corpus and the readings x lemmas matrix", exit_codes("the pages are written"))
     p.add_argument("models", nargs="*", metavar="MODEL", help="model files or names (default: every shipped model)")
     p.add_argument(
         "--out",

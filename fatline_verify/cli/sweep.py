@@ -17,6 +17,7 @@ from ..resources import default_max_memory, format_size, parse_size
 from ..schedulers.base import ENGINES
 from .check import MAX_Q
 from .common import (
+    exit_codes,
     EXIT_FOUND,
     EXIT_INCONCLUSIVE,
     EXIT_INTERRUPTED,
@@ -188,7 +189,7 @@ def parse_lemmas(text: str | None) -> tuple[Lemma, ...]:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "sweep", "each lemma over the whole product of readings, covered by counterexamples")
+    p = add_command(sub, "sweep", "each lemma over the whole product of readings, covered by counterexamples", exit_codes("every lemma holds within bounds under every reading", "a lemma is refuted under some reading (covering counterexamples)", "readings still open (--max-time, --max-checks) or some verdict INCONCLUSIVE", kept=True))
     add_model_argument(p)
     p.add_argument(
         "--vary",
