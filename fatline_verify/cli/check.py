@@ -36,18 +36,6 @@ MAX_Q = 1000
 MAX_STATES_LIMIT = 10**10
 
 
-def stage_callback(bar: Progress) -> Any:
-    """The engine's ``progress(label, done, total, note)`` as stages of ``bar``."""
-
-    def tick(label: str, done: int, total: int, note: str) -> None:
-        if label != bar.label:
-            bar.stage(label, timer=not total and not done)  # a stage that counts nothing shows its seconds
-        if total:
-            bar.update(done, total, note)
-
-    return tick
-
-
 def cmd_check(args: argparse.Namespace) -> int:
     from ..check.checker import CheckPlan, check_to_json, witness_path, witness_paths, write_witnesses
     from ..locks import holding
@@ -95,7 +83,7 @@ def cmd_check(args: argparse.Namespace) -> int:
             held.enter_context(holding(checkpoint, name="checkpoint"))
         with Progress(enabled=not args.quiet, unit="states") as bar:
             try:
-                for search in plan.searches(stage_callback(bar)):
+                for search in plan.searches(bar.follow):
                     done.append(search)
             except KeyboardInterrupt:
                 interrupted = True

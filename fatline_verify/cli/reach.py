@@ -44,12 +44,10 @@ def cmd_reach(args: argparse.Namespace) -> int:
 
     results = []
     interrupted = False
-    with Progress(enabled=not args.quiet, unit="robot counts") as bar:
-        bar.stage(f"{model.name}: reaching a line", total=hi - lo + 1)
+    with Progress(enabled=not args.quiet, unit="states") as bar:
         try:
-            for n in range(lo, hi + 1):
-                results.append(reach(model, n, window, kinds, witnesses=args.verify))
-                bar.step(f"{n} robots: {len(results[-1].stuck):,} stuck")
+            for n in range(lo, hi + 1):  # progress per state expanded, per stuck configuration: not per count
+                results.append(reach(model, n, window, kinds, witnesses=args.verify, progress=bar.follow))
         except KeyboardInterrupt:
             interrupted = True
     lines = reach_lines(model, args.model, kinds, window, results, shown=SHOWN)

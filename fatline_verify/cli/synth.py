@@ -68,13 +68,15 @@ def cmd_synth(args: argparse.Namespace) -> int:
 
     results = []
     interrupted = False
-    with Progress(enabled=not args.quiet, unit="robot counts") as bar:
-        bar.stage(f"{model.name}: synthesising tables ({scheduler.value})", total=hi - lo + 1)
+    with Progress(enabled=not args.quiet, unit="configurations") as bar:
         try:
-            for n in range(lo, hi + 1):
-                r = synthesise(model, n, window, kinds, scheduler=scheduler, solver=args.solver, smallest=lo)
+            for n in range(lo, hi + 1):  # progress per initial configuration and solve: not per robot count
+                r = synthesise(
+                    model, n, window, kinds, scheduler=scheduler, solver=args.solver, smallest=lo, progress=bar.follow
+                )
+                answer = "SAT" if r.sat else "UNSAT"
+                bar.stage(f"{lo}..{n} robots: {answer}; checking the answer (replayed, solved again)", timer=True)
                 results.append((r, certify(model, r, again=not args.no_again)))
-                bar.step(f"{lo}..{n} robots: {'SAT' if r.sat else 'UNSAT'}")
                 if not r.sat:  # more robots only add initial configurations: unsat stays unsat
                     break
         except KeyboardInterrupt:
