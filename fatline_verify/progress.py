@@ -28,7 +28,9 @@ from collections.abc import Callable
 from typing import Any, TextIO
 
 
-def estimate(done: int, total: int | None, started: float, last: float, now: float) -> tuple[float | None, float | None]:
+def estimate(
+    done: int, total: int | None, started: float, last: float, now: float
+) -> tuple[float | None, float | None]:
     """The rate and the seconds left of a stage that began at ``started`` and had ``done`` of ``total``
     units at ``last`` (the last update that moved), seen at ``now``. The rate is the average so far
     (``done`` over the seconds to ``now``: it falls while nothing moves); ``None`` before the first unit.

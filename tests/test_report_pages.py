@@ -258,7 +258,8 @@ def test_the_matrix_page_links_the_readings_and_wraps_verdicts(shipped):
     codes = re.findall(r'<a href="[^"]*#[^"]*"[^>]*>(<code>.*?</code>)</a>', matrix)
     assert codes
     for code in codes:
-        assert re.fullmatch(r'<code><span class="nowrap">[\w-]+=</span><wbr><span class="nowrap">[\w-]+</span></code>', code)
+        halves = r'<code><span class="nowrap">[\w-]+=</span><wbr><span class="nowrap">[\w-]+</span></code>'
+        assert re.fullmatch(halves, code), code
     assert "(check)" not in matrix and "(prove)" not in matrix  # grouped headers instead
     assert f'href="../{READINGS_DOC}#goal"' in matrix
     assert not LONG_DIGITS.search(re.sub(r'title="[^"]*"', "", page))

@@ -114,7 +114,17 @@ def cmd_check(args: argparse.Namespace) -> int:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "check", "check every lemma on every small swarm and every activation set (bounded)", exit_codes("every lemma HOLDS_WITHIN_BOUNDS", "a lemma is VIOLATED (a witness trace for each)", "nothing violated, but some verdict is INCONCLUSIVE (a bound was hit)", kept=True))
+    p = add_command(
+        sub,
+        "check",
+        "check every lemma on every small swarm and every activation set (bounded)",
+        exit_codes(
+            "every lemma HOLDS_WITHIN_BOUNDS",
+            "a lemma is VIOLATED (a witness trace for each)",
+            "nothing violated, but some verdict is INCONCLUSIVE (a bound was hit)",
+            kept=True,
+        ),
+    )
     add_model_argument(p)
     add_bounds(p)
     p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")

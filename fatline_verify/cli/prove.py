@@ -151,7 +151,17 @@ def running_note(running: dict[str, float], shown: int = 2) -> str:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "prove", "prove (for any swarm size) or refute each lemma per decision case with z3", exit_codes("every obligation PROVED", "an obligation is VIOLATED (a replayed counterexample for each)", "nothing violated, but some obligation is INCONCLUSIVE (the reason in its row)", kept=True))
+    p = add_command(
+        sub,
+        "prove",
+        "prove (for any swarm size) or refute each lemma per decision case with z3",
+        exit_codes(
+            "every obligation PROVED",
+            "an obligation is VIOLATED (a replayed counterexample for each)",
+            "nothing violated, but some obligation is INCONCLUSIVE (the reason in its row)",
+            kept=True,
+        ),
+    )
     add_model_argument(p)
     p.add_argument("--lemma", choices=[*(lemma.value for lemma in LEMMA_CHOICES), LIVENESS, ALL], default=ALL)
     p.add_argument(

@@ -67,7 +67,13 @@ def register(sub: Any) -> None:
     p = add_command(
         sub,
         "reach",
-        "whether any rule set whose moves are the repaired family's legs could bring each small swarm to a line", exit_codes("every initial configuration can be brought to a line", "some configuration cannot (listed as stuck)", kept=True))
+        "whether any rule set whose moves are the repaired family's legs could bring each small swarm to a line",
+        exit_codes(
+            "every initial configuration can be brought to a line",
+            "some configuration cannot (listed as stuck)",
+            kept=True,
+        ),
+    )
     add_model_argument(p, default=DEFAULT_MODEL)
     add_bounds(p)
     add_family_arguments(p)

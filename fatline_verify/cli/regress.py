@@ -177,7 +177,9 @@ def register(sub: Any) -> None:
     p = add_command(
         sub,
         "regress",
-        "replay every trace of directories (e.g. reports/traces) for CI; --junit writes JUnit XML", exit_codes("every trace reproduces", "a trace did not reproduce, or could not be replayed"))
+        "replay every trace of directories (e.g. reports/traces) for CI; --junit writes JUnit XML",
+        exit_codes("every trace reproduces", "a trace did not reproduce, or could not be replayed"),
+    )
     p.add_argument(
         "dirs",
         nargs="+",

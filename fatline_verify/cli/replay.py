@@ -158,7 +158,12 @@ def cmd_replay(args: argparse.Namespace) -> int:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "replay", "recompute traces from their initial positions and compare every recorded value", exit_codes("every trace reproduces", "a trace did not reproduce, or could not be replayed under --model"))
+    p = add_command(
+        sub,
+        "replay",
+        "recompute traces from their initial positions and compare every recorded value",
+        exit_codes("every trace reproduces", "a trace did not reproduce, or could not be replayed under --model"),
+    )
     p.add_argument("traces", nargs="+", metavar="TRACE")
     p.add_argument(
         "--model",

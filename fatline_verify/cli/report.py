@@ -59,7 +59,11 @@ def cmd_report(args: argparse.Namespace) -> int:
 
 def register(sub: Any) -> None:
     p = add_command(
-        sub, "report", "write per-model reports with pictures, the regression corpus and the readings x lemmas matrix", exit_codes("the pages are written"))
+        sub,
+        "report",
+        "write per-model reports with pictures, the regression corpus and the readings x lemmas matrix",
+        exit_codes("the pages are written"),
+    )
     p.add_argument("models", nargs="*", metavar="MODEL", help="model files or names (default: every shipped model)")
     p.add_argument(
         "--out",

@@ -84,7 +84,11 @@ def cmd_simulate(args: argparse.Namespace) -> int:
 
 def register(sub: Any) -> None:
     p = add_command(
-        sub, "simulate", "run one swarm under a seeded, fair random scheduler, or play an explicit schedule", exit_codes("the run ends without a violation or a deadlock", "a violation or a deadlock"))
+        sub,
+        "simulate",
+        "run one swarm under a seeded, fair random scheduler, or play an explicit schedule",
+        exit_codes("the run ends without a violation or a deadlock", "a violation or a deadlock"),
+    )
     add_model_argument(p)
     p.add_argument(
         "--init", required=True, help='initial centres in robot radii, e.g. "0,0 3,0 5/2,3" or "0,0 3.3,-2.2"'

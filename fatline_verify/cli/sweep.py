@@ -189,7 +189,17 @@ def parse_lemmas(text: str | None) -> tuple[Lemma, ...]:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "sweep", "each lemma over the whole product of readings, covered by counterexamples", exit_codes("every lemma holds within bounds under every reading", "a lemma is refuted under some reading (covering counterexamples)", "readings still open (--max-time, --max-checks) or some verdict INCONCLUSIVE", kept=True))
+    p = add_command(
+        sub,
+        "sweep",
+        "each lemma over the whole product of readings, covered by counterexamples",
+        exit_codes(
+            "every lemma holds within bounds under every reading",
+            "a lemma is refuted under some reading (covering counterexamples)",
+            "readings still open (--max-time, --max-checks) or some verdict INCONCLUSIVE",
+            kept=True,
+        ),
+    )
     add_model_argument(p)
     p.add_argument(
         "--vary",

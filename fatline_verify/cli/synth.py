@@ -104,7 +104,13 @@ def register(sub: Any) -> None:
         sub,
         "synth",
         "search for an oblivious rule table of the family's legs that is safe and live for small swarms, or prove "
-        "that none is (exit 1: some robot count is unsat)", exit_codes("a table exists for every robot count asked (SAT)", "some robot count is UNSAT (no such table; a replayed core)", kept=True))
+        "that none is (exit 1: some robot count is unsat)",
+        exit_codes(
+            "a table exists for every robot count asked (SAT)",
+            "some robot count is UNSAT (no such table; a replayed core)",
+            kept=True,
+        ),
+    )
     add_model_argument(p, default=DEFAULT_MODEL)
     add_bounds(p)
     add_family_arguments(p)

@@ -1,5 +1,5 @@
-"""``python -m fatline_verify.prove.certify [--jobs N] [DIR...]`` (``--help``: the usage): check every linear certificate
-(``*.linear.smt2``) under the directories (default ``proofs``) against the obligation file beside it,
+"""``python -m fatline_verify.prove.certify [--jobs N] [DIR...]`` (``--help``: the usage): check every linear
+certificate (``*.linear.smt2``) under the directories (default ``proofs``) against the obligation file beside it,
 from the two files alone (:mod:`fatline_verify.prove.smt.certificates`): the relaxed part is the
 obligation, every cut is implied by the atom its Boolean stands for, and cvc5 finds the linear problem
 unsat. Prints one line per certificate that fails and a count, and on stderr a progress line every 10

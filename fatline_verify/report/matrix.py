@@ -113,7 +113,8 @@ def _prove_cell(report: ModelReport, lemma: str) -> str:
         return "<td></td>"
     if not v.rows:  # NOT ENCODED: no obligation to count
         title = html.escape(f"{v.verdict}: {v.why}")
-        return f'<td class="{LEMMA_CLASS[v.verdict]}" title="{title}"><strong>lemma {html.escape(v.verdict)}</strong></td>'
+        verdict = html.escape(v.verdict)
+        return f'<td class="{LEMMA_CLASS[v.verdict]}" title="{title}"><strong>lemma {verdict}</strong></td>'
     rows = [r for r in report.prove["obligations"] if r["lemma"] == lemma]
     split = f" ({html.escape(counts_text(rows))})" if any(r.get("basis") for r in rows) else ""
     counts = prover_counts(rows, lemma)

@@ -143,7 +143,8 @@ def readings_html(report: ModelReport, root: str, sep: str = ", ") -> str:
         return f'<a href="{docs}">every default reading</a>'
     return sep.join(
         f'<a href="{docs}#{html.escape(k)}" title="{html.escape(CATALOGUE[k].readings[v])}">'
-        f'<code><span class="nowrap">{html.escape(k)}=</span><wbr><span class="nowrap">{html.escape(v)}</span></code></a>'
+        f'<code><span class="nowrap">{html.escape(k)}=</span><wbr>'
+        f'<span class="nowrap">{html.escape(v)}</span></code></a>'
         for k, v in diff.items()
     )
 

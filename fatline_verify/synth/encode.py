@@ -353,7 +353,8 @@ def search(
     lits = {}
     for k, s in enumerate(starts_):
         if tick is not None and k % TICK_EVERY == 0:
-            tick(f"{label}encoding initial configurations", k, len(starts_), f"{len(enc.reach):,} states", "configurations")
+            met = f"{len(enc.reach):,} states"
+            tick(f"{label}encoding initial configurations", k, len(starts_), met, "configurations")
         lits[enc.state(s)] = s
     while True:
         if tick is not None:
