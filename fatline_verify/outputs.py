@@ -22,7 +22,8 @@ import os
 import re
 import stat
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from enum import StrEnum
 from pathlib import Path
 from typing import IO, Any
@@ -148,6 +149,71 @@ def claim_files(paths: list[Path], *, name: str, kind: Kind, force: bool = False
                 f"{name}={str(path)!r}: exists and is not {kind.describe()}; expected it moved away "
                 "(or --force to overwrite it)"
             )
+
+
+@dataclass(frozen=True, slots=True)
+class Output:
+    """One output of a run, for :func:`distinct_outputs`: the option that names it, its path (``None``:
+    not asked for) and whether it is a directory the run writes into."""
+
+    option: str
+    path: str | os.PathLike[str] | None
+    directory: bool = False
+
+
+def _real(path: str | os.PathLike[str]) -> Path:
+    """``path`` absolute, links and ``..`` resolved as far as it exists: two spellings of one file meet."""
+    return Path(path).resolve()
+
+
+def _same(a: str | os.PathLike[str], b: str | os.PathLike[str]) -> bool:
+    """Whether ``a`` and ``b`` name one file or directory (one spelling, a link, or a hard link)."""
+    if _real(a) == _real(b):
+        return True
+    try:
+        return os.path.samefile(a, b)
+    except OSError:  # one of them does not exist yet: then only the resolved names could meet
+        return False
+
+
+def _inside(path: str | os.PathLike[str], directory: str | os.PathLike[str]) -> bool:
+    """Whether ``path`` lies in ``directory`` or below it (or is it)."""
+    real, where = _real(path), _real(directory)
+    return real == where or where in real.parents
+
+
+def distinct_outputs(outputs: Sequence[Output], inputs: Sequence[tuple[str, str | os.PathLike[str]]] = ()) -> None:
+    """Refuse, before any work, outputs of one run that would destroy each other or what the run reads:
+    two outputs naming one file (``--json F --junit F``), a file output inside a directory another output
+    writes into (``--json traces/X.json --traces traces``: it could replace a witness the same run
+    writes), two outputs naming one directory, and an output naming one of the run's input files
+    (``inputs``: option and path; only existing files count, so a shipped model's name is no input file).
+    One line naming both options and the path. Every command with more
+    than one output (or an output and an input file) calls this one check."""
+    given = [o for o in outputs if o.path is not None and str(o.path).strip()]
+    for k, a in enumerate(given):
+        assert a.path is not None
+        for b in given[k + 1 :]:
+            assert b.path is not None
+            if _same(a.path, b.path):
+                what = "directory" if a.directory and b.directory else "path"
+                raise InvalidInput(
+                    f"{a.option}={str(a.path)!r} and {b.option}={str(b.path)!r}: both name one {what}, so one output "
+                    "would destroy the other; expected a different path for each"
+                )
+            for file, folder in ((a, b), (b, a)):
+                assert file.path is not None and folder.path is not None
+                if folder.directory and not file.directory and _inside(file.path, folder.path):
+                    raise InvalidInput(
+                        f"{file.option}={str(file.path)!r} is inside {folder.option}={str(folder.path)!r}, a "
+                        "directory the same run writes into; expected a file outside it"
+                    )
+        for option, source in inputs:
+            if Path(source).is_file() and _same(a.path, source):
+                raise InvalidInput(
+                    f"{a.option}={str(a.path)!r} and {option}={str(source)!r}: the output names a file the run "
+                    "reads; expected an output path that is not an input"
+                )
 
 
 def child(directory: Path, name: str, suffix: str = "") -> Path:

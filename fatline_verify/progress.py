@@ -11,6 +11,11 @@ A stage may count nothing (``timer=True``: a compile, a set-up; it shows its ela
 obligation solves in a tenth of a second, the next in a minute; it shows the elapsed seconds). A
 ``live`` note is computed whenever the stage is shown (the seconds spent on what is running now),
 and a terminal's bar is redrawn every second while one is set.
+
+The rate is never rounded to "0/s" (below one a second it reads "40 s each"), and the ETA is the time
+the remaining units take at the rate the done ones took, counting down between updates and dropped
+once overdue (:func:`estimate`): it converges, or there is none; it never grows while nothing moves.
+Engines call back through :meth:`Progress.follow` ``(label, done, total, note)``: a stage per label.
 """
 
 from __future__ import annotations
@@ -21,6 +26,42 @@ import threading
 import time
 from collections.abc import Callable
 from typing import Any, TextIO
+
+
+def estimate(
+    done: int, total: int | None, started: float, last: float, now: float
+) -> tuple[float | None, float | None]:
+    """The rate and the seconds left of a stage that began at ``started`` and had ``done`` of ``total``
+    units at ``last`` (the last update that moved), seen at ``now``. The rate is the average so far
+    (``done`` over the seconds to ``now``: it falls while nothing moves); ``None`` before the first unit.
+    The ETA is what the remaining units take at the rate they were done at (to ``last``), less the time
+    since: it counts down between updates, and past its estimate it is ``None`` (no ETA, rather than one
+    that grows while nothing moves); ``None`` too without a total."""
+    if done <= 0 or now <= started:
+        return None, None
+    rate = done / (now - started)
+    if not total or done >= total or last <= started:
+        return rate, None
+    left = (total - done) * (last - started) / done - (now - last)
+    return rate, (left if left > 0 else None)
+
+
+def duration_text(seconds: float) -> str:
+    """``45 s``, ``12 min``, ``2.5 h``: a duration as a progress line shows it."""
+    if seconds < 120:
+        return f"{seconds:,.0f} s"
+    if seconds < 7200:
+        return f"{seconds / 60:,.0f} min"
+    return f"{seconds / 3600:,.1f} h"
+
+
+def rate_text(rate: float) -> str:
+    """``1,234/s``, ``2.5/s``, or below one a second ``40 s each``: never a rate that rounds to ``0/s``."""
+    if rate >= 10:
+        return f"{rate:,.0f}/s"
+    if rate >= 1:
+        return f"{rate:.1f}/s"
+    return f"{duration_text(1 / rate)} each"
 
 
 def peak_memory_mb() -> float:
@@ -49,7 +90,7 @@ class Progress:
         self.tty = self.stream.isatty() if tty is None else tty
         self.bar: Any = None
         self.label = ""
-        self.started = time.monotonic()
+        self.started = self.last = time.monotonic()
         self.done = 0
         self.total: int | None = None
         self.note = ""
@@ -86,7 +127,7 @@ class Progress:
             self.label, self.total, self.done, self.note = label, total, 0, ""
             self.eta, self.timer, self.live = eta, timer, live
             self.stage_unit = self.unit if unit is None else unit
-            self.started = time.monotonic()
+            self.started = self.last = time.monotonic()
             if self.tty:
                 from tqdm import tqdm
 
@@ -113,6 +154,8 @@ class Progress:
         if not self.enabled:
             return
         with self._lock:
+            if done != self.done:
+                self.last = time.monotonic()
             self.done, self.note = done, note
             if total is not None:
                 self.total = total
@@ -137,6 +180,19 @@ class Progress:
                 self.bar.write(f"fatline: {text}", file=self.stream)
             else:
                 self._line(text)
+
+    def follow(self, label: str, done: int, total: int = 0, note: str = "", unit: str | None = None) -> None:
+        """An engine's callback ``(label, done, total, note[, unit])``: a new stage whenever ``label`` changes
+        (one that starts counting nothing, ``total`` and ``done`` 0, shows its seconds), then its counts
+        (``total`` 0: not known, so a rate and no ETA); ``unit``: the stage's, if not the bar's."""
+        if label != self.label:
+            self.stage(label, total or None, timer=not total and not done, unit=unit)
+        if total or done:
+            if self.timer:  # it began counting nothing and counts now: the same stage, with its counts shown
+                started = self.started
+                self.stage(label, total or None, eta=self.eta, live=self.live, unit=unit)
+                self.started = self.last = started
+            self.update(done, total or None, note)
 
     def step(self, label: str) -> None:
         """One unit of the current stage done (``label`` names it)."""
@@ -184,18 +240,20 @@ class Progress:
         return ", ".join(part for part in (self.note, live) if part)
 
     def _counts(self) -> str:
-        elapsed = max(time.monotonic() - self.started, 1e-9)
+        now = time.monotonic()
+        elapsed = max(now - self.started, 1e-9)
         memory = f", {peak_memory_mb():,.0f} MB"
         if self.timer:
             return f"{elapsed:,.0f} s" + memory
         unit = self.stage_unit
-        rate = self.done / elapsed
         text = f"{self.done:,}" + (f"/{self.total:,} ({100 * self.done / self.total:.0f}%)" if self.total else "")
-        if not self.eta:
-            return text + f" {unit}".rstrip() + f", {elapsed:,.0f} s" + memory
-        text += f" {unit}".rstrip() + f", {rate:,.0f}/s" if unit else f", {elapsed:.0f} s"
-        if self.total and self.done and self.done < self.total:
-            text += f", ETA {(self.total - self.done) / rate:,.0f} s"
+        text += f" {unit}".rstrip()
+        if not self.eta or not unit:
+            return text + f", {elapsed:,.0f} s" + memory
+        rate, left = estimate(self.done, self.total, self.started, self.last, now)
+        text += f", {rate_text(rate)}" if rate is not None else f", {elapsed:,.0f} s"
+        if left is not None:
+            text += f", ETA {duration_text(left)}"
         return text + memory
 
     def _line(self, text: str) -> None:

@@ -97,3 +97,15 @@ def test_the_command_refuses_a_bad_jobs_count(value, tmp_path, capsys):
     assert certify.main(["--jobs", value, str(tmp_path)]) == 2
     err = capsys.readouterr().err
     assert f"--jobs {value}" in err and "positive whole number" in err and len(err.strip().splitlines()) == 1
+
+
+def test_help_is_a_usage_text(capsys):
+    """``--help`` prints the usage, what it checks and its exit codes, exit 0 (it was "no such directory")."""
+    from fatline_verify.prove import certify
+
+    assert certify.main(["--help"]) == 0
+    out, err = capsys.readouterr()
+    assert out.startswith("usage: python -m fatline_verify.prove.certify [-h] [--jobs N] [DIR ...]")
+    assert "exit codes:" in out and "no such directory" not in out + err
+    assert certify.main(["--frobnicate"]) == 2
+    assert capsys.readouterr().err.strip() == "fatline: certify: unrecognized arguments: --frobnicate"

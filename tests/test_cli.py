@@ -202,3 +202,31 @@ def test_bad_expected_verdicts(capsys, tmp_path):
     path.write_text('[expected]\nhappiness = "VIOLATED"\n')
     code, _, err = run_cli(capsys, "check", str(path), "-q")
     assert_one_line_error(code, err, "expected.happiness='VIOLATED': unknown key")
+
+
+def _subcommands():
+    import argparse
+
+    from fatline_verify.cli import build_parser
+
+    action = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    return action.choices
+
+
+@pytest.mark.parametrize("name", sorted(_subcommands()))
+def test_each_help_lists_only_the_exit_codes_its_command_returns(name):
+    """A command's epilog lists 0, 2 and 130 (every command: main's) and 1 and 3 exactly when its handler's
+    module returns them, with no line for another command."""
+    import inspect
+    import re
+
+    parser = _subcommands()[name]
+    handler = parser.get_default("handler")
+    source = inspect.getsource(inspect.getmodule(handler))
+    expected = {0, 2, 130} | ({1} if "EXIT_FOUND" in source else set())
+    expected |= {3} if "EXIT_INCONCLUSIVE" in source else set()
+    epilog = parser.epilog or ""
+    listed = {int(m[1]) for m in re.finditer(r"^  (\d+) ", epilog, re.MULTILINE)}
+    assert listed == expected, epilog
+    others = set(_subcommands()) - {name}
+    assert not any(re.search(rf"\b{other}\b[,:]", epilog) for other in others), epilog

@@ -132,6 +132,7 @@ HOSTILE = [
     # more workers than cores: refused (not capped), before any work
     ("check-workers-64", ["check", "--workers", "64", "-q"], "workers=64: expected at most"),
     ("sweep-workers-64", ["sweep", "--workers", "64", "-q"], "workers=64: expected at most"),
+    ("prove-jobs-64", ["prove", "--jobs", "64", "--out", "p", "-q"], "jobs=64: expected at most"),
     # names the file system cannot take: before any search
     ("check-json-long-name", ["check", "--robots", "2", "--json", f"{LONG}.json", "-q"], "file name too long"),
     ("check-traces-long-name", ["check", "--robots", "2", "--traces", LONG, "-q"], "file name too long"),
@@ -152,6 +153,21 @@ def test_hostile_input_is_one_line(capsys, tmp_path, monkeypatch, argv, fragment
     line = refused(capsys, argv, fragment)
     assert "expected" in line
     assert snapshot(tmp_path) == before
+
+
+def test_prove_jobs_are_held_to_the_cores(capsys, tmp_path, monkeypatch):
+    """``prove --jobs`` above the cores is refused as ``check --workers`` is (one check, ``check_cores``),
+    whatever this machine has: here it is told it has 2. The default is the cores, so it passes."""
+    import fatline_verify.cli.common as common
+    from fatline_verify.cli import build_parser
+
+    assert build_parser().parse_args(["prove"]).jobs == common.cores()
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(common, "cores", lambda: 2)
+    line = refused(capsys, ["prove", "--jobs", "3", "--out", "p", "-q"], "jobs=3: expected at most 2, the cores")
+    assert "INCONCLUSIVE" in line
+    assert not (tmp_path / "p").exists()
+    common.check_cores("jobs", 2, "as many as the cores")  # does not raise
 
 
 def test_a_long_value_is_echoed_short(capsys, tmp_path, monkeypatch):

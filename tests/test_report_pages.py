@@ -221,7 +221,7 @@ def test_each_card_shows_its_own_smallest_witness():
     assert 'class="viewer" id="beta-check-connectivity-n2"' in cards["beta"]
     assert "beta/img/beta-check-connectivity-n2-0.svg" in cards["beta"] and "alpha" not in cards["beta"]
     assert "whose run no model above shows" in cards["beta"]
-    assert "scheduler=<wbr>centralized" in cards["beta"]
+    assert '<span class="nowrap">scheduler=</span><wbr><span class="nowrap">centralized</span>' in cards["beta"]
     assert 'class="viewer"' not in cards["gamma"] and "no counterexample" in cards["gamma"]
 
 
@@ -250,12 +250,35 @@ def test_the_shipped_cards_are_each_models_own(shipped):
 def test_the_matrix_page_links_the_readings_and_wraps_verdicts(shipped):
     page = cross_model_html(shipped)
     matrix = page.split('<table class="matrix">', 1)[1].split("</table>", 1)[0]
-    assert "HOLDS_<wbr>WITHIN_<wbr>BOUNDS" in matrix
-    assert "HOLDS_WITHIN_BOUNDS" not in re.sub(r"<[^>]*>", "", matrix.replace("<wbr>", "|"))
+    # HOLDS_WITHIN_BOUNDS on two lines that never break inside a word (it wrapped onto three at "_<wbr>")
+    holds = '<span class="nowrap" title="HOLDS_WITHIN_BOUNDS">HOLDS</span><br><span class="rows">within bounds</span>'
+    assert holds in matrix and "_<wbr>" not in matrix
+    assert "HOLDS_WITHIN_BOUNDS" not in re.sub(r"<[^>]*>", "", matrix)
+    # a reading's link breaks only after its '=', never inside the option's or the reading's name
+    codes = re.findall(r'<a href="[^"]*#[^"]*"[^>]*>(<code>.*?</code>)</a>', matrix)
+    assert codes
+    for code in codes:
+        halves = r'<code><span class="nowrap">[\w-]+=</span><wbr><span class="nowrap">[\w-]+</span></code>'
+        assert re.fullmatch(halves, code), code
     assert "(check)" not in matrix and "(prove)" not in matrix  # grouped headers instead
     assert f'href="../{READINGS_DOC}#goal"' in matrix
     assert not LONG_DIGITS.search(re.sub(r'title="[^"]*"', "", page))
     assert f"]({f'../{READINGS_DOC}'})" in cross_model_markdown(shipped)
+
+
+def test_a_prover_cell_says_its_counts_are_obligation_rows(shipped):
+    """ "NOT PROVED" above "25 PROVED" needed the intro to decode: the cell says which is the lemma and what
+    the counts are (issue 41)."""
+    page = cross_model_html(shipped)
+    cells = re.findall(r'<td class="[^"]*" title="[^"]*"><strong>(.*?)</td>', page)
+    assert cells
+    for cell in cells:
+        assert cell.startswith("lemma "), cell
+        if "<br>" in cell:  # counts follow: they are obligation rows
+            assert '</strong><br><span class="rows">obligation rows:</span><br>' in cell, cell
+    markdown = cross_model_markdown(shipped)
+    assert "| lemma NOT PROVED; obligation rows: 25 PROVED |" in markdown
+    assert "| NOT PROVED: " not in markdown and "| NOT ENCODED: " not in markdown
 
 
 def test_the_matrix_says_why_a_model_has_no_prover_cells(shipped):

@@ -272,3 +272,31 @@ def test_tampered_schedule_trace_says_recorded_value_differs(capsys, tmp_path):
     code, out, _ = run_cli(capsys, "replay", str(trace))
     assert code == 1
     assert "DID NOT REPRODUCE: rounds[0].positions[0][1]: recorded 1, replayed 0" in out
+
+
+def test_replay_of_many_traces_names_each_one_that_cannot_be_played_and_exits_1(capsys):
+    """An ASYNC trace under a round model cannot be played: a line naming its file, the other traces still
+    replayed, a summary counting each kind, exit 1 (a trace did not reproduce), not 2 (bad input)."""
+    traces = [
+        CORPUS / "paper-check-connectivity-n2.json",  # gone under certified
+        CORPUS / "paper-async-check-connectivity-n2.json",  # events: not played by an SSYNC model
+        CORPUS / "paper-check-connectivity-n2.json",
+    ]
+    code, out, err = run_cli(capsys, "replay", *map(str, traces), "--model", "certified")
+    assert (code, err) == (1, "")
+    lines = out.strip().splitlines()
+    assert len(lines) == 4
+    assert lines[1].startswith(f"{traces[1]}: COULD NOT BE REPLAYED under certified: rounds/0: an asynchronous event")
+    assert lines[0].startswith(f"{traces[0]}: DID NOT REPRODUCE: the counterexample is gone under certified")
+    assert lines[3] == (
+        "3 traces replayed under certified: 0 reproduce; 2 did not (2 with the counterexample or recorded outcome "
+        "gone); 1 could not be replayed"
+    )
+
+
+def test_replay_refuses_a_bad_file_before_replaying_any(capsys, tmp_path):
+    bad = tmp_path / "bad.json"
+    bad.write_text("{")
+    code, out, err = run_cli(capsys, "replay", str(CORPUS / "paper-check-connectivity-n2.json"), str(bad))
+    assert code == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1 and "bad.json" in err

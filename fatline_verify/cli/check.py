@@ -10,7 +10,7 @@ from typing import Any
 from ..errors import InvalidInput
 from ..junit import check_suites, claim_junit, write_junit
 from ..model.config import parse_robots, parse_window
-from ..outputs import Kind, claim_dir, claim_file, claim_files, write_json
+from ..outputs import Kind, Output, claim_dir, claim_file, claim_files, distinct_outputs, write_json
 from ..progress import Progress
 from ..resources import parse_size
 from ..schedulers.base import ENGINES
@@ -26,6 +26,7 @@ from .common import (
     add_model_argument,
     check_workers,
     emit,
+    exit_codes,
     integer,
     model_arg,
     nonempty,
@@ -33,18 +34,6 @@ from .common import (
 
 MAX_Q = 1000
 MAX_STATES_LIMIT = 10**10
-
-
-def stage_callback(bar: Progress) -> Any:
-    """The engine's ``progress(label, done, total, note)`` as stages of ``bar``."""
-
-    def tick(label: str, done: int, total: int, note: str) -> None:
-        if label != bar.label:
-            bar.stage(label, timer=not total and not done)  # a stage that counts nothing shows its seconds
-        if total:
-            bar.update(done, total, note)
-
-    return tick
 
 
 def cmd_check(args: argparse.Namespace) -> int:
@@ -62,6 +51,15 @@ def cmd_check(args: argparse.Namespace) -> int:
     bound = parse_window(args.bound, error=InvalidInput, name="bound") if args.bound is not None else None
     max_memory = parse_size(args.max_memory) if args.max_memory is not None else None
     checkpoint = Path(args.checkpoint) if args.checkpoint is not None else None
+    distinct_outputs(
+        [
+            Output("json", json_path),
+            Output("junit", junit_path),
+            Output("traces", traces_dir, directory=True),
+            Output("checkpoint", checkpoint, directory=True),
+        ],
+        [("model", args.model)],
+    )
     check_workers(args.workers, args.cluster)
     plan = CheckPlan.of(
         model,
@@ -85,7 +83,7 @@ def cmd_check(args: argparse.Namespace) -> int:
             held.enter_context(holding(checkpoint, name="checkpoint"))
         with Progress(enabled=not args.quiet, unit="states") as bar:
             try:
-                for search in plan.searches(stage_callback(bar)):
+                for search in plan.searches(bar.follow):
                     done.append(search)
             except KeyboardInterrupt:
                 interrupted = True
@@ -116,7 +114,17 @@ def cmd_check(args: argparse.Namespace) -> int:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "check", "check every lemma on every small swarm and every activation set (bounded)")
+    p = add_command(
+        sub,
+        "check",
+        "check every lemma on every small swarm and every activation set (bounded)",
+        exit_codes(
+            "every lemma HOLDS_WITHIN_BOUNDS",
+            "a lemma is VIOLATED (a witness trace for each)",
+            "nothing violated, but some verdict is INCONCLUSIVE (a bound was hit)",
+            kept=True,
+        ),
+    )
     add_model_argument(p)
     add_bounds(p)
     p.add_argument("--q", type=integer("q", 1, MAX_Q), help="lattice points per radius (default: the model's q)")

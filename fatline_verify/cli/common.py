@@ -11,6 +11,7 @@ import math
 import os
 import re
 import sys
+import textwrap
 from collections.abc import Callable, Sequence
 from typing import Any, NoReturn
 
@@ -24,7 +25,8 @@ EXIT_OK, EXIT_FOUND, EXIT_BAD, EXIT_INCONCLUSIVE, EXIT_INTERRUPTED = 0, 1, 2, 3,
 EPILOG = """exit codes:
   0    everything asked holds (check: every lemma HOLDS_WITHIN_BOUNDS; simulate: no violation and no
        deadlock; replay, regress: every trace reproduces)
-  1    a violation or deadlock was found, or a trace did not reproduce
+  1    a violation or deadlock was found, or a trace did not reproduce (replay, regress: or could not be
+       replayed under --model)
   2    bad input (malformed model, trace or argument) or an internal error
   3    check, prove and sweep: nothing violated, but some verdict is INCONCLUSIVE (a bound was hit)
   130  interrupted (Ctrl-C); what was finished is kept
@@ -83,13 +85,25 @@ def cores() -> int:
         return os.cpu_count() or 1
 
 
-def check_workers(workers: int, cluster: str | None) -> None:
-    """Refuse (not cap), before any work, more local worker processes than this machine has cores:
-    they would only share the cores, each holding its own copy of the search."""
-    if cluster is None and workers > cores():
+def check_cores(name: str, value: int, why: str, instead: str = "") -> None:
+    """Refuse (not cap), before any work, ``--NAME VALUE`` processes or solvers at once above this machine's
+    cores: they would only share the cores; ``why`` says what that costs, ``instead`` what to do for more."""
+    if value > cores():
         raise InvalidInput(
-            f"workers={workers}: expected at most {cores()}, the cores of this machine (more processes than cores "
-            "only share them); for more, --cluster with the workers of several machines"
+            f"{name}={value}: expected at most {cores()}, the cores of this machine ({why})"
+            + (f"; {instead}" if instead else "")
+        )
+
+
+def check_workers(workers: int, cluster: str | None) -> None:
+    """``--workers`` of ``check`` and ``sweep``: local worker processes, each holding its own copy of the
+    search (a ``--cluster`` brings its own machines)."""
+    if cluster is None:
+        check_cores(
+            "workers",
+            workers,
+            "more processes than cores only share them",
+            "for more, --cluster with the workers of several machines",
         )
 
 
@@ -109,9 +123,25 @@ class Parser(argparse.ArgumentParser):
         raise ArgumentError(message)
 
 
-def add_command(sub: Any, name: str, help_text: str) -> Parser:
-    """A subcommand whose description is its help line."""
-    return sub.add_parser(name, help=help_text, description=help_text)  # type: ignore[no-any-return]
+def exit_codes(ok: str, found: str | None = None, inconclusive: str | None = None, kept: bool = False) -> str:
+    """One command's ``--help`` epilog: the exit codes it can return, each said for it (``found``: exit 1,
+    ``inconclusive``: exit 3; ``kept``: an interrupt keeps what was finished). Exit 2 and 130 come from
+    :func:`fatline_verify.cli.main` for every command."""
+    rows = [(EXIT_OK, ok), (EXIT_FOUND, found)]
+    rows += [(EXIT_BAD, "bad input (model, trace or argument: one line, before any work) or an internal error")]
+    rows += [(EXIT_INCONCLUSIVE, inconclusive)]
+    rows += [(EXIT_INTERRUPTED, "interrupted (Ctrl-C)" + ("; what was finished is kept" if kept else ""))]
+    lines = ["exit codes:"]
+    for code, text in rows:
+        if text is not None:
+            lines.append(textwrap.fill(text, 100, initial_indent=f"  {code:<5}", subsequent_indent=" " * 7))
+    return "\n".join(lines) + "\n"
+
+
+def add_command(sub: Any, name: str, help_text: str, exits: str) -> Parser:
+    """A subcommand whose description is its help line and whose epilog is its own exit codes (``exits``:
+    :func:`exit_codes`)."""
+    return sub.add_parser(name, help=help_text, description=help_text, epilog=exits)  # type: ignore[no-any-return]
 
 
 def add_model_argument(p: argparse.ArgumentParser, default: str = "paper") -> None:

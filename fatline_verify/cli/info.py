@@ -9,7 +9,7 @@ from ..errors import InvalidInput
 from ..model.config import load_model, shipped_models
 from ..model.options import CATALOGUE
 from ..text import explain_lines
-from .common import EXIT_OK, add_command, emit, model_arg
+from .common import EXIT_OK, add_command, emit, exit_codes, model_arg
 
 
 def cmd_explain(args: argparse.Namespace) -> int:
@@ -30,10 +30,10 @@ def cmd_models(args: argparse.Namespace) -> int:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "explain", "print the paper's open points: quote, readings, default")
+    p = add_command(sub, "explain", "print the paper's open points: quote, readings, default", exit_codes("printed"))
     p.add_argument("option", nargs="?", help="one option (default: all)")
     p.add_argument("--model", help="mark the readings this model file selects")
     p.set_defaults(handler=cmd_explain)
 
-    p = add_command(sub, "models", "list the shipped model files")
+    p = add_command(sub, "models", "list the shipped model files", exit_codes("listed"))
     p.set_defaults(handler=cmd_models)

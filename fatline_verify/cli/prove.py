@@ -3,13 +3,12 @@
 from __future__ import annotations
 
 import argparse
-import os
 import time
 from typing import Any
 
 from ..junit import claim_junit, prove_suites, write_junit
 from ..lemmas.properties import PROVED_LEMMAS, Lemma
-from ..outputs import Kind, child, claim_dir, claim_file, claim_files, write_json
+from ..outputs import Kind, Output, child, claim_dir, claim_file, claim_files, distinct_outputs, write_json
 from ..progress import Progress
 from ..text import prove_lines
 from .common import (
@@ -20,7 +19,10 @@ from .common import (
     add_command,
     add_force,
     add_model_argument,
+    check_cores,
+    cores,
     emit,
+    exit_codes,
     integer,
     model_arg,
     nonempty,
@@ -42,6 +44,12 @@ LIVENESS = "liveness"
 
 
 def cmd_prove(args: argparse.Namespace) -> int:
+    check_cores(
+        "jobs",
+        args.jobs,
+        "more solvers than cores only share them against each obligation's wall-clock budget, and rows that "
+        "prove alone come out INCONCLUSIVE",
+    )
     if args.with_ is not None:
         from .prove_whatif import cmd_prove_whatif
 
@@ -71,6 +79,15 @@ def cmd_prove(args: argparse.Namespace) -> int:
     traces_dir = claim_dir(args.traces, name="traces") if args.traces is not None else out / "traces"
     json_path = claim_file(args.json, name="json", kind=Kind.PROVE, force=args.force) if args.json else None
     junit_path = claim_junit(args.junit, force=args.force) if args.junit else None
+    distinct_outputs(
+        [
+            Output("out", out, directory=True),
+            Output("traces", traces_dir, directory=True),
+            Output("json", json_path),
+            Output("junit", junit_path),
+        ],
+        [("model", args.model), *(("known", name) for name in args.known)],
+    )
     claim_files([out / "results.json"], name="out", kind=Kind.PROVE, force=args.force)
     store = ProofResults(model, out, traces_dir, slots=args.slots, timeout=args.timeout)
     if args.redo_inconclusive:
@@ -140,7 +157,17 @@ def running_note(running: dict[str, float], shown: int = 2) -> str:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "prove", "prove (for any swarm size) or refute each lemma per decision case with z3")
+    p = add_command(
+        sub,
+        "prove",
+        "prove (for any swarm size) or refute each lemma per decision case with z3",
+        exit_codes(
+            "every obligation PROVED",
+            "an obligation is VIOLATED (a replayed counterexample for each)",
+            "nothing violated, but some obligation is INCONCLUSIVE (the reason in its row)",
+            kept=True,
+        ),
+    )
     add_model_argument(p)
     p.add_argument("--lemma", choices=[*(lemma.value for lemma in LEMMA_CHOICES), LIVENESS, ALL], default=ALL)
     p.add_argument(
@@ -158,8 +185,8 @@ def register(sub: Any) -> None:
     p.add_argument(
         "--jobs",
         type=integer("jobs", 1, MAX_JOBS),
-        default=os.cpu_count() or 1,
-        help="obligations solved at once (default: the number of cores)",
+        default=cores(),
+        help="obligations solved at once, at most the number of cores (default: the number of cores)",
     )
     p.add_argument(
         "--out",

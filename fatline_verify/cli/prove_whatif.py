@@ -9,7 +9,7 @@ import time
 from ..errors import InvalidInput
 from ..integrity import seal
 from ..lemmas.properties import Lemma
-from ..outputs import Kind, child, claim_dir, claim_file, claim_files, write_json
+from ..outputs import Kind, Output, child, claim_dir, claim_file, claim_files, distinct_outputs, write_json
 from .common import EXIT_FOUND, EXIT_INCONCLUSIVE, EXIT_INTERRUPTED, EXIT_OK, emit, model_arg
 
 ALL = "all"
@@ -59,6 +59,7 @@ def cmd_prove_whatif(args: argparse.Namespace) -> int:
     json_path = out / f"{tag}.json"
     claim_files([json_path], name="out", kind=Kind.PROVE, force=args.force)
     extra = claim_file(args.json, name="json", kind=Kind.PROVE, force=args.force) if args.json else None
+    distinct_outputs([Output("out", out, directory=True), Output("json", extra)], [("model", args.model)])
     smt_dir = out / tag
     rows: list[dict[str, object]] = []
 

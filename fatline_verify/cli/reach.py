@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from ..outputs import Kind, claim_file, write_json
+from ..outputs import Kind, Output, claim_file, distinct_outputs, write_json
 from ..progress import Progress
 from .common import (
     EXIT_FOUND,
@@ -16,6 +16,7 @@ from .common import (
     add_force,
     add_model_argument,
     emit,
+    exit_codes,
     model_arg,
     nonempty,
 )
@@ -39,15 +40,14 @@ def cmd_reach(args: argparse.Namespace) -> int:
     refuse(model)
     lo, hi, window = family_bounds(args, model, BYTES_PER_START)
     json_path = claim_file(args.json, name="json", kind=Kind.REACH, force=args.force) if args.json else None
+    distinct_outputs([Output("json", json_path)], [("model", args.model)])
 
     results = []
     interrupted = False
-    with Progress(enabled=not args.quiet, unit="robot counts") as bar:
-        bar.stage(f"{model.name}: reaching a line", total=hi - lo + 1)
+    with Progress(enabled=not args.quiet, unit="states") as bar:
         try:
-            for n in range(lo, hi + 1):
-                results.append(reach(model, n, window, kinds, witnesses=args.verify))
-                bar.step(f"{n} robots: {len(results[-1].stuck):,} stuck")
+            for n in range(lo, hi + 1):  # progress per state expanded, per stuck configuration: not per count
+                results.append(reach(model, n, window, kinds, witnesses=args.verify, progress=bar.follow))
         except KeyboardInterrupt:
             interrupted = True
     lines = reach_lines(model, args.model, kinds, window, results, shown=SHOWN)
@@ -68,6 +68,11 @@ def register(sub: Any) -> None:
         sub,
         "reach",
         "whether any rule set whose moves are the repaired family's legs could bring each small swarm to a line",
+        exit_codes(
+            "every initial configuration can be brought to a line",
+            "some configuration cannot (listed as stuck)",
+            kept=True,
+        ),
     )
     add_model_argument(p, default=DEFAULT_MODEL)
     add_bounds(p)

@@ -19,16 +19,17 @@ from __future__ import annotations
 
 import argparse
 import time
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from ..errors import FatlineError, InvalidInput, TraceDidNotReproduce
 from ..junit import Case, Outcome, Suite, claim_junit, totals, write_junit
 from ..model.config import Model
-from ..outputs import Kind, read_json
+from ..outputs import Kind, Output, distinct_outputs, read_json
 from ..progress import Progress
 from ..trace.traces import check_replay, differences, load_trace, replay, trace_model
-from .common import EXIT_FOUND, EXIT_OK, add_command, add_force, emit, model_arg, nonempty
+from .common import EXIT_FOUND, EXIT_OK, add_command, add_force, emit, exit_codes, model_arg, nonempty
 from .replay import _same_model, not_reproduced
 
 OTHER_OUTPUTS = frozenset(k.value for k in Kind if k is not Kind.TRACE)
@@ -62,12 +63,17 @@ def _files(arg: str) -> list[tuple[Path, str]]:
     return sorted(found, key=lambda item: item[1])
 
 
-def collect(arg: str, override: Model | None) -> tuple[list[Entry], int]:
-    """Every trace of ``arg``, loaded, schema-checked and its model resolved (a bad one: one line, exit 2),
-    and how many other fatline outputs were skipped."""
+def collect(
+    arg: str, files: list[tuple[Path, str]], override: Model | None, loaded: Callable[[str], None] | None = None
+) -> tuple[list[Entry], int]:
+    """Every trace of ``files`` (:func:`_files` of ``arg``), loaded, schema-checked and its model resolved
+    (a bad one: one line, exit 2), and how many other fatline outputs were skipped; ``loaded(name)`` as
+    each file is taken up (the progress of a load that takes a minute for 10,000 traces)."""
     entries, skipped = [], 0
     directory = Path(arg).is_dir()
-    for path, name in _files(arg):
+    for path, name in files:
+        if loaded is not None:
+            loaded(name)
         try:
             doc = load_trace(path)
         except FatlineError:
@@ -123,13 +129,16 @@ def replay_case(entry: Entry, override: Model | None, model_flag: str | None) ->
 def cmd_regress(args: argparse.Namespace) -> int:
     override = model_arg(args.model) if args.model is not None else None
     junit = claim_junit(args.junit, force=args.force) if args.junit is not None else None
-    groups = [(arg, *collect(arg, override)) for arg in args.dirs]
+    listed = [(arg, _files(arg)) for arg in args.dirs]
     under = f" under {override.name}" if override is not None else ""
-
     suites: list[Suite] = []
     lines: list[str] = []
-    started = time.perf_counter()
     with Progress(enabled=not args.quiet, unit="traces") as bar:
+        bar.stage("loading and checking traces", total=sum(len(files) for _, files in listed))
+        groups = [(arg, *collect(arg, files, override, bar.step)) for arg, files in listed]
+        traces = [("dir", entry.path) for _, entries, _ in groups for entry in entries]
+        distinct_outputs([Output("junit", junit)], [*traces, *([("model", args.model)] if args.model else [])])
+        started = time.perf_counter()
         bar.stage("replaying traces", total=sum(len(entries) for _, entries, _ in groups))
         for arg, entries, _ in groups:
             cases = []
@@ -169,6 +178,7 @@ def register(sub: Any) -> None:
         sub,
         "regress",
         "replay every trace of directories (e.g. reports/traces) for CI; --junit writes JUnit XML",
+        exit_codes("every trace reproduces", "a trace did not reproduce, or could not be replayed"),
     )
     p.add_argument(
         "dirs",

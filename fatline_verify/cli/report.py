@@ -8,9 +8,9 @@ from typing import Any
 
 from ..errors import InvalidInput
 from ..model.config import shipped_models
-from ..outputs import claim_dir
+from ..outputs import Output, claim_dir, distinct_outputs
 from ..progress import Progress
-from .common import EXIT_OK, add_command, add_force, emit, integer, model_arg, nonempty, seconds
+from .common import EXIT_OK, add_command, add_force, emit, exit_codes, integer, model_arg, nonempty, seconds
 from .prove import DEFAULT_SLOTS, DEFAULT_TIMEOUT, MAX_SLOTS
 
 STEPS = ("check", "prove", "pictures")
@@ -27,6 +27,10 @@ def cmd_report(args: argparse.Namespace) -> int:
         raise InvalidInput(f"models={specs}: two models share a name; expected distinct model names")
     out = Path(args.out)
     claim_dir(out, name="out")
+    distinct_outputs(
+        [Output("out", out, directory=True), Output("proofs", args.proofs, directory=True)],
+        [("models", spec) for spec in specs],
+    )
     with holding(out, name="out"), Progress(enabled=not args.quiet, unit="steps") as bar:  # one run per --out
         bar.stage("report", total=len(models) * len(STEPS))
         reports = build_report(
@@ -55,7 +59,10 @@ def cmd_report(args: argparse.Namespace) -> int:
 
 def register(sub: Any) -> None:
     p = add_command(
-        sub, "report", "write per-model reports with pictures, the regression corpus and the readings x lemmas matrix"
+        sub,
+        "report",
+        "write per-model reports with pictures, the regression corpus and the readings x lemmas matrix",
+        exit_codes("the pages are written"),
     )
     p.add_argument("models", nargs="*", metavar="MODEL", help="model files or names (default: every shipped model)")
     p.add_argument(

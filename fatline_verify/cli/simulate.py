@@ -7,7 +7,7 @@ from dataclasses import replace
 from typing import Any
 
 from ..errors import InvalidInput
-from ..outputs import Kind, claim_file
+from ..outputs import Kind, Output, claim_file, distinct_outputs
 from ..schedulers.activation import scheduler_named
 from ..schedulers.systems import system_for
 from ..text import plural, trace_lines
@@ -20,6 +20,7 @@ from .common import (
     add_force,
     add_model_argument,
     emit,
+    exit_codes,
     integer,
     model_arg,
     parse_init,
@@ -46,6 +47,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     if args.schedule is not None:
         _random_only(args)
     trace = claim_file(args.trace, name="trace", kind=Kind.TRACE, force=args.force) if args.trace is not None else None
+    distinct_outputs([Output("trace", trace)], [("model", args.model)])
     model = model_arg(args.model)
     if args.q is not None:  # the lattice the repaired rules shorten their legs on (1/q radius)
         model = model.with_q(args.q)
@@ -85,7 +87,10 @@ def cmd_simulate(args: argparse.Namespace) -> int:
 
 def register(sub: Any) -> None:
     p = add_command(
-        sub, "simulate", "run one swarm under a seeded, fair random scheduler, or play an explicit schedule"
+        sub,
+        "simulate",
+        "run one swarm under a seeded, fair random scheduler, or play an explicit schedule",
+        exit_codes("the run ends without a violation or a deadlock", "a violation or a deadlock"),
     )
     add_model_argument(p)
     p.add_argument(

@@ -11,7 +11,7 @@ from typing import Any
 from ..errors import InvalidInput
 from ..lemmas.properties import CHECKED, Lemma
 from ..model.config import parse_robots, parse_window
-from ..outputs import child, claim_dir
+from ..outputs import Output, child, claim_dir, distinct_outputs
 from ..progress import Progress
 from ..resources import default_max_memory, format_size, parse_size
 from ..schedulers.base import ENGINES
@@ -25,6 +25,7 @@ from .common import (
     add_model_argument,
     check_workers,
     emit,
+    exit_codes,
     integer,
     model_arg,
     nonempty,
@@ -61,6 +62,7 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     if args.cluster is not None or args.workers > 1:
         require_dask(f"workers={args.workers}" if args.cluster is None else f"cluster={args.cluster!r}")
     root = claim_dir(args.out, name="out")
+    distinct_outputs([Output("out", child(root, model.name), directory=True)], [("model", args.model)])
     sweep = Sweep(
         Space(model, vary),
         SweepBounds(robots, window, args.engine, args.max_states, bound),
@@ -187,7 +189,17 @@ def parse_lemmas(text: str | None) -> tuple[Lemma, ...]:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "sweep", "each lemma over the whole product of readings, covered by counterexamples")
+    p = add_command(
+        sub,
+        "sweep",
+        "each lemma over the whole product of readings, covered by counterexamples",
+        exit_codes(
+            "every lemma holds within bounds under every reading",
+            "a lemma is refuted under some reading (covering counterexamples)",
+            "readings still open (--max-time, --max-checks) or some verdict INCONCLUSIVE",
+            kept=True,
+        ),
+    )
     add_model_argument(p)
     p.add_argument(
         "--vary",

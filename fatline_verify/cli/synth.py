@@ -7,7 +7,7 @@ import argparse
 from typing import Any
 
 from ..errors import InvalidInput
-from ..outputs import Kind, claim_file, write_json
+from ..outputs import Kind, Output, claim_file, distinct_outputs, write_json
 from ..progress import Progress
 from .common import (
     EXIT_FOUND,
@@ -18,6 +18,7 @@ from .common import (
     add_force,
     add_model_argument,
     emit,
+    exit_codes,
     model_arg,
     nonempty,
 )
@@ -63,16 +64,19 @@ def cmd_synth(args: argparse.Namespace) -> int:
     most = (MAX_ROBOTS, "every reachable configuration is in the formula")
     lo, hi, window = family_bounds(args, model, BYTES_PER_START, most)
     json_path = claim_file(args.json, name="json", kind=Kind.SYNTH, force=args.force) if args.json else None
+    distinct_outputs([Output("json", json_path)], [("model", args.model)])
 
     results = []
     interrupted = False
-    with Progress(enabled=not args.quiet, unit="robot counts") as bar:
-        bar.stage(f"{model.name}: synthesising tables ({scheduler.value})", total=hi - lo + 1)
+    with Progress(enabled=not args.quiet, unit="configurations") as bar:
         try:
-            for n in range(lo, hi + 1):
-                r = synthesise(model, n, window, kinds, scheduler=scheduler, solver=args.solver, smallest=lo)
+            for n in range(lo, hi + 1):  # progress per initial configuration and solve: not per robot count
+                r = synthesise(
+                    model, n, window, kinds, scheduler=scheduler, solver=args.solver, smallest=lo, progress=bar.follow
+                )
+                answer = "SAT" if r.sat else "UNSAT"
+                bar.stage(f"{lo}..{n} robots: {answer}; checking the answer (replayed, solved again)", timer=True)
                 results.append((r, certify(model, r, again=not args.no_again)))
-                bar.step(f"{lo}..{n} robots: {'SAT' if r.sat else 'UNSAT'}")
                 if not r.sat:  # more robots only add initial configurations: unsat stays unsat
                     break
         except KeyboardInterrupt:
@@ -101,6 +105,11 @@ def register(sub: Any) -> None:
         "synth",
         "search for an oblivious rule table of the family's legs that is safe and live for small swarms, or prove "
         "that none is (exit 1: some robot count is unsat)",
+        exit_codes(
+            "a table exists for every robot count asked (SAT)",
+            "some robot count is UNSAT (no such table; a replayed core)",
+            kept=True,
+        ),
     )
     add_model_argument(p, default=DEFAULT_MODEL)
     add_bounds(p)

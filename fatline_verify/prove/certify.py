@@ -1,5 +1,5 @@
-"""``python -m fatline_verify.prove.certify [--jobs N] [DIR...]``: check every linear certificate
-(``*.linear.smt2``) under the directories (default ``proofs``) against the obligation file beside it,
+"""``python -m fatline_verify.prove.certify [--jobs N] [DIR...]`` (``--help``: the usage): check every linear
+certificate (``*.linear.smt2``) under the directories (default ``proofs``) against the obligation file beside it,
 from the two files alone (:mod:`fatline_verify.prove.smt.certificates`): the relaxed part is the
 obligation, every cut is implied by the atom its Boolean stands for, and cvc5 finds the linear problem
 unsat. Prints one line per certificate that fails and a count, and on stderr a progress line every 10
@@ -9,12 +9,13 @@ before any work."""
 
 from __future__ import annotations
 
+import argparse
 import sys
 import time
 from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
-from typing import TypeVar
+from typing import NoReturn, TypeVar
 
 T = TypeVar("T")
 R = TypeVar("R")
@@ -35,17 +36,52 @@ def _usage(message: str) -> int:
     return 2
 
 
+class _BadArgument(Exception):
+    """An argument argparse refused: one line, exit 2 (no usage text but with ``--help``)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> NoReturn:
+        raise _BadArgument(message)
+
+
+DESCRIPTION = """Check every linear certificate (*.linear.smt2) under the directories against the obligation
+file beside it, from the two files alone: the relaxed part is the obligation, every cut is implied
+by the atom its Boolean stands for, and cvc5 finds the linear problem unsat. Prints one line per
+certificate that fails, then a count; on stderr a progress line every 10 s."""
+
+EPILOG = """exit codes:
+  0    every certificate checks from its own files
+  1    a certificate failed (a line FAILED PATH: why for each)
+  2    a bad argument (a directory that does not exist, a bad --jobs), before any work
+"""
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The command line: ``[--jobs N] [DIR...]``, with ``--help``."""
+    p = _Parser(
+        prog="python -m fatline_verify.prove.certify",
+        description=DESCRIPTION,
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    p.add_argument("dirs", nargs="*", metavar="DIR", help="directories searched recursively (default: proofs)")
+    p.add_argument("--jobs", default="1", metavar="N", help="certificates checked at once (default 1)")
+    return p
+
+
 def main(argv: list[str] | None = None) -> int:
-    args = list(sys.argv[1:] if argv is None else argv)
-    jobs = 1
-    if "--jobs" in args:
-        i = args.index("--jobs")
-        value = args[i + 1] if i + 1 < len(args) else ""
-        if not value.isdigit() or int(value) < 1:
-            return _usage(f"--jobs {value or '(missing)'}: expected a positive whole number of processes")
-        jobs = int(value)
-        del args[i : i + 2]
-    dirs = [Path(a) for a in args] or [Path("proofs")]
+    try:
+        parsed = build_parser().parse_args(sys.argv[1:] if argv is None else argv)
+    except _BadArgument as exc:
+        return _usage(str(exc))
+    except SystemExit as exc:  # --help
+        return int(exc.code or 0)
+    value = parsed.jobs
+    if not value.isdigit() or int(value) < 1:
+        return _usage(f"--jobs {value or '(missing)'}: expected a positive whole number of processes")
+    jobs = int(value)
+    dirs = [Path(a) for a in parsed.dirs] or [Path("proofs")]
     for d in dirs:
         if not d.is_dir():
             return _usage(f"{d.as_posix()}: no such directory; expected a directory of proofs")

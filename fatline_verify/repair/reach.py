@@ -286,6 +286,11 @@ class Family:
 
 
 Rounds = Callable[[State], Iterable[Moves]]
+Tick = Callable[[str, int, int, str, str], None]
+"""Progress, as :meth:`fatline_verify.progress.Progress.follow` hears it: ``(what, done, total, note,
+unit)``, ``total`` 0 when not known (the engine never prints)."""
+TICK_EVERY = 256
+"""States expanded between two progress calls of a closure."""
 
 CONFIRM = 100
 """Stuck configurations searched again on their own per robot count, evenly spread (all with ``witnesses``):
@@ -302,12 +307,18 @@ class _Graph:
     parents: dict[State, set[State]] = field(default_factory=dict)
     unsafe: int = 0
 
-    def close(self, roots: Iterable[State]) -> None:
+    def close(self, roots: Iterable[State], tick: Callable[[int, int], None] | None = None) -> None:
+        """Add every state ``rounds`` reach from ``roots``; ``tick(expanded, known)`` every
+        :data:`TICK_EVERY` states expanded (the states met so far as the note: the total is not known)."""
         queue = deque(s for s in roots if s not in self.parents)
         for s in queue:
             self.parents.setdefault(s, set())
+        expanded = 0
         while queue:
             state = queue.popleft()
+            expanded += 1
+            if tick is not None and expanded % TICK_EVERY == 0:
+                tick(expanded, len(self.parents))
             for moves in self.rounds(state):
                 nxt = canonical(moved(state, moves))
                 if nxt == state:
@@ -398,21 +409,30 @@ def reach(
     kinds: frozenset[Kind] = PROVED,
     *,
     witnesses: bool = False,
+    progress: Tick | None = None,
 ) -> ReachResult:
     """The two-phase search of the module docstring over every initial configuration of ``n`` robots in
-    ``window``; with ``witnesses``, a shortest way to a line for each that has one."""
+    ``window``; with ``witnesses``, a shortest way to a line for each that has one. ``progress`` hears each
+    phase: the states each closure expands (their number is not known ahead), then the stuck configurations
+    searched again one by one, and the witnesses replayed (those two with their totals)."""
     family = Family(model, kinds)
+    tell: Tick = progress if progress is not None else (lambda *_: None)
 
     def goal(s: State) -> bool:
         return is_goal(s, family.model)
 
+    def closing(what: str) -> Callable[[int, int], None]:
+        label = f"{n} robots: {what}"
+        tell(label, 0, 0, "", "states")
+        return lambda expanded, known: tell(label, expanded, 0, f"{known:,} met", "states")
+
     first = starts(model, n, window)
     single = _Graph(family.one_mover, family.safe)
-    single.close(first)
+    single.close(first, closing(f"states by one mover from {len(first):,} initial configurations"))
     dist1 = single.distances(goal)
     hard = [s for s in first if s not in dist1]
     full = _Graph(family.any_movers, family.safe)
-    full.close(hard)
+    full.close(hard, closing(f"states by any movers from the {len(hard):,} configurations one mover leaves"))
     dist2 = full.distances(goal)
     paths: dict[State, list[tuple[State, Moves]]] = {}
     if witnesses:
@@ -420,11 +440,15 @@ def reach(
         paths |= {s: _path(full, dist2, s) for s in hard if s in dist2}
     stuck = tuple(sorted(s for s in hard if s not in dist2))
     again = stuck if witnesses or len(stuck) <= CONFIRM else stuck[:: -(-len(stuck) // CONFIRM)]
-    confirmed = sum(confirm_stuck(s, family) for s in again)
+    confirmed = 0
+    for k, s in enumerate(again):
+        tell(f"{n} robots: stuck configurations searched again", k, len(again), "", "configurations")
+        confirmed += confirm_stuck(s, family)
     replayed = None
     if witnesses:
         replayed = 0
-        for s, steps in paths.items():
+        for k, (s, steps) in enumerate(paths.items()):
+            tell(f"{n} robots: ways to a line replayed", k, len(paths), "", "ways")
             problems = replay_witness(s, steps, family)
             if problems:
                 raise AssertionError(f"the way to a line from {s} does not replay: {problems[0]}")

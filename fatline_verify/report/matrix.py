@@ -17,6 +17,7 @@ from .data import ModelReport
 from .parts import (
     DOCS_LINK,
     PROVER_LEMMAS,
+    ROWS,
     html_page,
     lemma_summary,
     md_table,
@@ -53,8 +54,11 @@ INTRO = (
     "PROVED, VIOLATED only by a replayed counterexample of the lemma itself, else NOT PROVED or NOT ENCODED "
     "(approach, a liveness lemma, has no obligation of its own; progress and termination are judged from the "
     "liveness obligations, enabledness per decision case and a ranking measure, where a rule set declares them: "
-    "an empty cell claims nothing); then the obligations counted by verdict, safety rows' PROVED split into "
+    "an empty cell claims nothing); then its obligation rows counted by verdict (one row per obligation: "
+    "*lemma NOT PROVED; obligation rows: 25 PROVED* is a lemma not proved although each of its 25 rows is: "
+    "those rows are not all the forms that together imply it), safety rows' PROVED split into "
     "substantive, immediate (true by the rule's construction) and vacuous (the case never fires). "
+    "HOLDS_WITHIN_BOUNDS reads *HOLDS within bounds* in the HTML matrix. "
     "Every VIOLATED verdict has a counterexample trace in `traces/` that `fatline replay` reproduces."
 )
 
@@ -78,8 +82,16 @@ PROVE_TITLE = (
 
 
 def _verdict_html(verdict: str) -> str:
-    """A verdict that may wrap at its underscores (``HOLDS_WITHIN_BOUNDS`` is wider than a column)."""
-    return html.escape(verdict).replace("_", "_<wbr>")
+    """A verdict on at most two lines that never break inside a word: ``HOLDS_WITHIN_BOUNDS`` (wider than a
+    column, and it wrapped onto three lines at its underscores) is "HOLDS" over "within bounds", the full
+    name on hover."""
+    if verdict == "HOLDS_WITHIN_BOUNDS":
+        return f'<span class="nowrap" title="{verdict}">HOLDS</span><br><span class="rows">within bounds</span>'
+    return f'<span class="nowrap">{html.escape(verdict)}</span>'
+
+
+ROWS_HTML = f'<span class="rows">{ROWS}:</span>'
+"""Above a prover cell's counts: they count obligation rows, not the lemma."""
 
 
 def _check_cell(rows: list[dict[str, Any]], lemma: str) -> str:
@@ -101,15 +113,16 @@ def _prove_cell(report: ModelReport, lemma: str) -> str:
         return "<td></td>"
     if not v.rows:  # NOT ENCODED: no obligation to count
         title = html.escape(f"{v.verdict}: {v.why}")
-        return f'<td class="{LEMMA_CLASS[v.verdict]}" title="{title}"><strong>{html.escape(v.verdict)}</strong></td>'
+        verdict = html.escape(v.verdict)
+        return f'<td class="{LEMMA_CLASS[v.verdict]}" title="{title}"><strong>lemma {verdict}</strong></td>'
     rows = [r for r in report.prove["obligations"] if r["lemma"] == lemma]
     split = f" ({html.escape(counts_text(rows))})" if any(r.get("basis") for r in rows) else ""
     counts = prover_counts(rows, lemma)
     lines = "<br>".join(f"{n}&nbsp;{_verdict_html(k)}" + (split if k == "PROVED" else "") for k, n in counts)
     title = html.escape(f"{v.verdict}: {v.why}. Obligations: {v.counts}")
     return (
-        f'<td class="{LEMMA_CLASS[v.verdict]}" title="{title}"><strong>{html.escape(v.verdict)}</strong><br>'
-        f"{lines}</td>"
+        f'<td class="{LEMMA_CLASS[v.verdict]}" title="{title}"><strong>lemma {html.escape(v.verdict)}</strong><br>'
+        f"{ROWS_HTML}<br>{lines}</td>"
     )
 
 

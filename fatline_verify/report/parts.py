@@ -67,7 +67,8 @@ table.matrix { width: 100%; font-size: 0.76em; }
 .matrix td.model { white-space: nowrap; }
 .matrix td.readings { min-width: 10em; max-width: 14em; }
 .matrix td.readings code { font-size: 0.95em; }
-.matrix .robots { color: #555; white-space: nowrap; }
+.matrix .robots, .matrix .rows { color: #555; white-space: nowrap; }
+.nowrap { white-space: nowrap; }
 .viewer { border: 1px solid #ccc; padding: 0.6em; margin: 1em 0; overflow-wrap: anywhere; }
 .viewer img { max-width: 100%; height: auto; display: block; margin: 0.5em 0; }
 .card { margin: 1.5em 0; } .card h3 { margin-bottom: 0.2em; } .card p { margin: 0.2em 0; }
@@ -109,12 +110,17 @@ def model_lemma_verdicts(report: ModelReport) -> dict[str, LemmaVerdict]:
     return {v.lemma: v for v in lemma_verdicts(report.model, rows, tuple(lemma.value for lemma in PROVER_LEMMAS))}
 
 
+ROWS = "obligation rows"
+"""What a prover cell's counts are: its obligations (rows of ``results.json``) by verdict, not the lemma."""
+
+
 def lemma_summary(report: ModelReport, lemma: str) -> str:
-    """A matrix cell: the lemma-level verdict, then its rows' counts (PROVED split by basis)."""
+    """A matrix cell: the lemma-level verdict, then its obligation rows' counts (PROVED split by basis), each
+    said for what it is: ``lemma NOT PROVED; obligation rows: 25 PROVED`` (25 rows PROVED, the lemma not)."""
     v = model_lemma_verdicts(report).get(lemma)
     if v is None or not report.prove.get("obligations"):  # no prover run (a scheduler it refuses): no claim
         return ""
-    return f"{v.verdict}: {v.counts}" if v.rows else v.verdict  # NOT ENCODED: no rows to count"
+    return f"lemma {v.verdict}; {ROWS}: {v.counts}" if v.rows else v.verdict  # NOT ENCODED: no rows to count
 
 
 def _own_rules(report: ModelReport) -> str | None:
@@ -147,7 +153,8 @@ def readings_html(report: ModelReport, root: str, sep: str = ", ") -> str:
         return f'<a href="{docs}">every default reading</a>'
     return sep.join(
         f'<a href="{docs}#{html.escape(k)}" title="{html.escape(meaning(k, v))}">'
-        f"<code>{html.escape(k)}=<wbr>{html.escape(v)}</code></a>"
+        f'<code><span class="nowrap">{html.escape(k)}=</span><wbr>'
+        f'<span class="nowrap">{html.escape(v)}</span></code></a>'
         for k, v in diff.items()
     )
 
@@ -221,6 +228,7 @@ __all__ = [
     "DOCS_LINK",
     "PROVER_LEMMAS",
     "RANK",
+    "ROWS",
     "VIEWER_JS",
     "html_numbers",
     "html_page",

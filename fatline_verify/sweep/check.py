@@ -6,11 +6,12 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from ..lemmas.properties import CHECKED, Lemma, LemmaResult, Verdict
 from ..model.config import Model
+from ..progress import estimate, rate_text
 from .equivalent import Explored, held_past_violations
 
 Activity = Callable[[str], None]
@@ -26,15 +27,20 @@ class Doing:
     unit: str = ""
     replays: Callable[[], int] | None = None
     """The replays made so far, where they are not the unit counted (a spread's remembered answers)."""
+    since: float = field(default_factory=time.monotonic)
+    """When this step began: its count's rate is shown, since the judgements move only between steps."""
 
     def set(self, what: str, unit: str = "", replays: Callable[[], int] | None = None) -> None:
         self.what, self.count, self.unit, self.replays = what, 0, unit, replays
+        self.since = time.monotonic()
 
     def tick(self, count: int) -> None:
         self.count = count
 
     def __str__(self) -> str:
-        text = self.what + (f", {self.count:,} {self.unit}" if self.unit else "")
+        rate, _ = estimate(self.count, None, self.since, self.since, time.monotonic())
+        pace = f" ({rate_text(rate)})" if rate is not None else ""
+        text = self.what + (f", {self.count:,} {self.unit}{pace}" if self.unit else "")
         return text + (f", {self.replays():,} replays" if self.replays is not None else "")
 
 

@@ -50,7 +50,7 @@ from ..model.config import Model
 from ..model.numbers import Point
 from ..model.options import Scheduler
 from ..model.swarm import is_goal
-from ..repair.reach import PROVED, Family, Kind, Moves, State, canonical, family_legs, moved, starts
+from ..repair.reach import PROVED, Family, Kind, Moves, State, Tick, canonical, family_legs, moved, starts
 from .table import ORIGIN, Table, View, view_of
 
 SCHEDULERS = (Scheduler.CENTRALIZED, Scheduler.SSYNC)
@@ -344,10 +344,21 @@ def longest(edges: dict[State, list[tuple[State, Moves]]], roots: list[State]) -
     return max((depth[r] for r in roots), default=0)
 
 
-def search(enc: Encoder, starts_: list[State], stats: Stats) -> tuple[Table | None, list[State], int, int]:
-    """The refinement loop on ``starts_``: a safe, live table, or ``None`` and the starts in the core."""
-    lits = {enc.state(s): s for s in starts_}
+def search(
+    enc: Encoder, starts_: list[State], stats: Stats, tick: Tick | None = None, label: str = ""
+) -> tuple[Table | None, list[State], int, int]:
+    """The refinement loop on ``starts_``: a safe, live table, or ``None`` and the starts in the core.
+    ``tick`` hears the initial configurations encoded (each with every configuration one mover reaches from
+    it), then each solve and refinement (``label`` begins each stage's name)."""
+    lits = {}
+    for k, s in enumerate(starts_):
+        if tick is not None and k % TICK_EVERY == 0:
+            met = f"{len(enc.reach):,} states"
+            tick(f"{label}encoding initial configurations", k, len(starts_), met, "configurations")
+        lits[enc.state(s)] = s
     while True:
+        if tick is not None:
+            tick(f"{label}solving and refining", stats.refinements, 0, f"{enc.clauses:,} clauses", "refinements")
         if not enc.solver.solve(assumptions=list(lits)):
             core = enc.solver.get_core() or []
             return None, [lits[c] for c in core if c in lits], 0, 0
@@ -357,6 +368,10 @@ def search(enc: Encoder, starts_: list[State], stats: Stats) -> tuple[Table | No
             kept = _reached_views(enc, starts_, table)
             return Table(table.q, table.rad_v, {v: e for v, e in table.legs.items() if v in kept}), [], rounds, reached
         stats.refinements += 1
+
+
+TICK_EVERY = 16
+"""Initial configurations encoded between two progress calls."""
 
 
 def _reached_views(enc: Encoder, starts_: list[State], table: Table) -> set[View]:
@@ -388,22 +403,27 @@ def synthesise(
     only: list[State] | None = None,
     keep: list[list[int]] | None = None,
     smallest: int | None = None,
+    progress: Tick | None = None,
 ) -> SynthResult:
     """A safe, live table for ``n`` robots of ``model`` in ``window`` (module docstring), or the proof that
     none exists: an unsat core of initial configurations (deletion-minimal with ``minimise``). ``only``:
     these initial configurations instead of the checker's list; ``keep``: a list that receives every clause
     (the last formula, for solving it again elsewhere); ``smallest``: one table for every count from
-    ``smallest`` to ``n`` (a robot does not know how many there are: its view is the same in all of them)."""
+    ``smallest`` to ``n`` (a robot does not know how many there are: its view is the same in all of them).
+    ``progress`` hears the configurations encoded, each solve, and the core's configurations tried out."""
     t0 = time.perf_counter()
     lo = n if smallest is None else smallest
     first = list(only) if only is not None else [s for k in range(lo, n + 1) for s in starts(model, k, window)]
     enc = Encoder(model, kinds, scheduler, solver)
     enc.keep = keep
     stats = Stats()
-    table, core, rounds, reached = search(enc, first, stats)
+    label = f"{lo}..{n} robots: " if lo != n else f"{n} robots: "
+    table, core, rounds, reached = search(enc, first, stats, progress, label)
     if table is None and minimise:
         core = sorted(set(core))
-        for s in list(core):
+        for k, s in enumerate(list(core)):
+            if progress is not None:
+                progress(f"{label}minimising the core", k, len(core), f"{len(core):,} left", "configurations")
             rest = [c for c in core if c != s]
             if rest and search(enc, rest, stats)[0] is None:
                 core = rest

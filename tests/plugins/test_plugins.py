@@ -298,7 +298,8 @@ def test_check_runs_the_toy_scheduler_and_every_engine_agrees(engine: str, tmp_p
         (4, 11243, 17726),
     ]
     ssync = tmp_path / "ssync.json"
-    fatline("check", "paper", "--robots", "4", "--engine", engine, "--json", str(ssync), "--traces", str(tmp_path))
+    traces = str(tmp_path / "t4")  # not tmp_path itself: the --json file would be inside it (refused)
+    fatline("check", "paper", "--robots", "4", "--engine", engine, "--json", str(ssync), "--traces", traces)
     everyone = json.loads(ssync.read_text())["searches"][0]
     # the same states as SSYNC (one robot at a time reaches them), fewer transitions (no sets of 3 or 4)
     assert everyone["states"] == 11243 and everyone["transitions"] > 17726
