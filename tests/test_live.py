@@ -127,7 +127,8 @@ def test_tasks_include_liveness_by_default_for_a_rule_set_that_declares_it(paper
     assert Lemma.PROGRESS in LEMMAS and Lemma.TERMINATION in LEMMAS
     # one enabledness row per case, one measure row per moving case
     cases = live_cases(paper)
-    assert sum(k.startswith("progress/") for k in keys) == len(cases)
+    assert sum(k.startswith("progress/enabled-") for k in keys) == len(cases)
+    assert "progress/coverage-cases" in keys  # the cases held to decide on views
     assert sum(k.startswith("termination/") for k in keys) == sum(c.moves for c in cases)
 
 
@@ -256,8 +257,13 @@ def toys() -> Iterator[dict[str, object]]:
 def test_toy_right_is_proved_live(toys, tmp_path) -> None:
     model = toys["toy-right"]
     tasks = tasks_for(model)
-    assert {t.key for t in tasks} == {"progress/enabled-stay", "progress/enabled-right", "termination/measure-right"}
-    for task in tasks:
+    assert {t.key for t in tasks} == {
+        "progress/enabled-stay",
+        "progress/enabled-right",
+        "termination/measure-right",
+        "progress/coverage-cases",
+    }
+    for task in (t for t in tasks if isinstance(t, LiveSpec)):
         got = prove_live(model, task, timeout=10, out=tmp_path)
         assert got.verdict is Verdict.PROVED, (task.key, got.reason)
     with pytest.raises(NotEncodedModel, match="only this rule set's liveness"):
@@ -310,7 +316,11 @@ def test_lemma_level_verdicts_stuck_refutes_a_bad_round_does_not(toys) -> None:
 
     model = toys["toy-right"]
     got = liveness_verdicts(model, _rows(model, {}))
-    assert got[Lemma.PROGRESS] == ("PROVED", "every enabledness row PROVED")
+    assert got[Lemma.PROGRESS] == ("PROVED", "every enabledness row PROVED, every decision in a declared case")
+    # the cases not held to decide on every view: neither lemma PROVED
+    sampled = liveness_verdicts(model, _rows(model, {"progress/coverage-cases": "INCONCLUSIVE"}))
+    assert sampled[Lemma.PROGRESS][0] == sampled[Lemma.TERMINATION][0] == "NOT PROVED"
+    assert "progress/coverage-cases INCONCLUSIVE" in sampled[Lemma.PROGRESS][1]
     # every liveness row PROVED, yet no safety rows and no obligation bounding sum(-x): never PROVED
     verdict, why = got[Lemma.TERMINATION]
     assert verdict == "NOT PROVED"

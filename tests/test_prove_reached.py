@@ -83,7 +83,7 @@ def test_a_paper_deadlock_reached_after_a_round_violates_progress_and_terminatio
     (out / "paper" / "traces" / f"paper-prove-progress-enabled-{AI}.json").unlink(missing_ok=True)
 
     argv = ["prove", "paper", "--lemma", "liveness", "--redo-inconclusive", "--known", str(known)]
-    code = main([*argv, "--out", str(out), "--timeout", "1", "--jobs", "2", "--no-corpus", "-q"])
+    code = main([*argv, "--out", str(out), "--timeout", "1", "--jobs", "2", "--no-corpus", "-q", "--coverage", "200"])
     printed = capsys.readouterr().out
     assert code == 1, printed
     assert "not used" not in printed
@@ -107,7 +107,7 @@ def test_a_paper_deadlock_reached_after_a_round_violates_progress_and_terminatio
 def test_known_refuses_what_it_cannot_use_in_one_line_before_any_work(tmp_path, capsys) -> None:
     model = load_model("paper")
     out = tmp_path / "p"
-    base = ["prove", "paper", "--lemma", "liveness", "--out", str(out), "-q", "--known"]
+    base = ["prove", "paper", "--lemma", "liveness", "--out", str(out), "-q", "--coverage", "200", "--known"]
     other = ROOT / "reports" / "traces" / "repaired-check-progress-n3.json"
     err = _refused([*base, str(other)], capsys)
     assert "a trace of rule set 'repaired'" in err and "expected a trace of model paper's rule set 'paper'" in err

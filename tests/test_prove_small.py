@@ -149,7 +149,18 @@ def test_known_traces_decide_the_obligations_they_break_and_only_those(tmp_path,
         (out / "paper-drop-touch" / "traces" / f"paper-drop-touch-prove-no-collision-one-mover-{case}.json").unlink()
     before = {r["case"]: r for r in data["obligations"] if r["lemma"] == "no-collision"}
     known = [str(p) for p in sorted(KNOWN.glob("*.json"))]
-    argv = ["prove", "paper-drop-touch", "--redo-inconclusive", "--known", *known, "--out", str(out), "-q"]
+    argv = [
+        "prove",
+        "paper-drop-touch",
+        "--redo-inconclusive",
+        "--known",
+        *known,
+        "--out",
+        str(out),
+        "-q",
+        "--coverage",
+        "200",
+    ]
     code = main([*argv, "--no-corpus"])  # nor the shipped corpus, which holds them too
     assert code == 1
     rows = {r["case"]: r for r in json.loads(results.read_text())["obligations"] if r["lemma"] == "no-collision"}

@@ -184,7 +184,7 @@ def test_a_toy_missing_its_staying_case_is_caught_with_a_view_that_replays(toys,
     (nothing says a robot may stay) while the rules deadlock; the check names a view of the missing
     case, decide stays there, and the complete toy's staying case is that decision."""
     model, complete = toys["toy-far-no-stay"], toys["toy-far"]
-    assert [t.key for t in tasks_for(model, (Lemma.PROGRESS,))] == ["progress/enabled-right"]
+    assert [t.key for t in tasks_for(model, (Lemma.PROGRESS,))] == ["progress/enabled-right", refine.KEY]
     proved = prove_live(model, LiveSpec(Lemma.PROGRESS, ENABLED, "right"), timeout=10, out=tmp_path)
     assert proved.verdict is Verdict.PROVED, proved.reason
 
@@ -304,19 +304,16 @@ def test_the_paper_with_scenario_1_left_out_is_caught_on_its_views(paper) -> Non
         registry._REGISTRY.update(before)
 
 
-@pytest.mark.xfail(
-    strict=True, reason="prove/coverage.py's liveness_verdicts does not read refine.refinement_gap yet (issue 37)"
-)
 def test_an_uncovered_view_leaves_progress_not_proved_at_lemma_level(toys) -> None:
     """Every row of the toy without its staying case PROVED, its coverage row VIOLATED: progress must
-    not be PROVED (nor VIOLATED: an uncovered view is a hole in the argument, not a stuck swarm). Today
-    it is PROVED; this turns green (and strict, fails as XPASS) once the hook is wired."""
+    not be PROVED (nor VIOLATED: an uncovered view is a hole in the argument, not a stuck swarm)."""
     from fatline_verify.prove.coverage import liveness_verdicts
 
     model = toys["toy-far-no-stay"]
     rows = [
         {"lemma": str(t.lemma), "form": t.form, "rule": "any", "case": t.case, "verdict": "PROVED"}
         for t in tasks_for(model, (Lemma.PROGRESS, Lemma.TERMINATION))
+        if t.key != refine.KEY
     ]
     rows.append(_row(refine.prove_coverage(model, sample=300)))
     assert rows[-1]["verdict"] == "VIOLATED"

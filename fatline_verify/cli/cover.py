@@ -14,7 +14,17 @@ from typing import Any
 from ..errors import InvalidInput
 from ..lemmas.properties import Verdict
 from ..rules import registry
-from .common import EXIT_FOUND, EXIT_OK, add_command, add_model_argument, emit, integer, model_arg
+from .common import (
+    EXIT_FOUND,
+    EXIT_OK,
+    add_command,
+    add_model_argument,
+    check_cores,
+    emit,
+    exit_codes,
+    integer,
+    model_arg,
+)
 
 
 def cmd_cover(args: argparse.Namespace) -> int:
@@ -23,6 +33,7 @@ def cmd_cover(args: argparse.Namespace) -> int:
     model = model_arg(args.model)
     if registry.of(model).liveness is None:
         raise InvalidInput(f"rules={model.rules!r}: the rule set declares no liveness cases; expected one that does")
+    check_cores("jobs", args.jobs, "each process checks a share of the views")
     if args.all:
         emit([f"{model.name}: {count_views(model)} views at q={model.parameters.q}, rad_v={model.parameters.rad_v}"])
     row = prove_coverage(model, exhaustive=args.all, sample=args.sample, processes=args.jobs)
@@ -31,7 +42,15 @@ def cmd_cover(args: argparse.Namespace) -> int:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "cover", "check that a rule set's liveness cases cover every decision of its decide")
+    p = add_command(
+        sub,
+        "cover",
+        "check that a rule set's liveness cases cover every decision of its decide",
+        exit_codes(
+            "every view checked is in a declared case with decide's destination",
+            "a view is in no declared case (it is named)",
+        ),
+    )
     add_model_argument(p)
     p.add_argument("--all", action="store_true", help="every view a robot can have (default: a random sample)")
     p.add_argument(

@@ -66,12 +66,14 @@ LEGS_FACTS = (
         "legs",
         "every move of the repaired rules is one leg (horizontal right, top, bottom) that repairs.allowed passed, "
         "whatever rule chose it",
-        "by test: leg_of and allowed on the repaired rules' decisions in random swarms (tests/test_legs.py)",
+        "by test on the repaired rules' own decide: random swarms (tests/test_legs.py), 1,500 random views of the "
+        "lattice q = 1 (tests/test_facts.py), every view at q = 1 in the slow tier (fatline_verify/prove/facts.py)",
     ),
     Fact(
         "lock",
         "a robot that sees a robot strictly left of it stays (so the bridge robot b of a bridged edge is at rest)",
-        "by test: the bridge robot of every bridged edge in random swarms stays (tests/test_legs.py)",
+        "by test on the repaired rules' own decide: random swarms (tests/test_legs.py), 1,500 random views of the "
+        "lattice q = 1 (tests/test_facts.py), every view at q = 1 in the slow tier (fatline_verify/prove/facts.py)",
     ),
 )
 """What the repaired rules' leg obligations rest on beside their rows (:mod:`fatline_verify.prove.smt.legs`)."""
@@ -486,8 +488,10 @@ def live_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, L
     if declared is None or not any(r.get("lemma") in LIVENESS for r in rows):
         return {}  # no liveness rows (a scheduler the prover refuses has no rows at all)
     by_key = {row_key(r): r for r in rows}
+    from .smt.liveness import ENABLED
+
     expected = [t.key for t in tasks_for(model, (Lemma.PROGRESS, Lemma.TERMINATION))]
-    enabled = [k for k in expected if k.startswith(f"{Lemma.PROGRESS}/")]
+    enabled = [k for k in expected if k.startswith(f"{Lemma.PROGRESS}/{ENABLED}-")]
     measure = [k for k in expected if k.startswith(f"{Lemma.TERMINATION}/")]
     if not any(k in by_key for k in expected):
         return {}
@@ -520,8 +524,14 @@ def live_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, L
         out[Lemma.PROGRESS] = made(Lemma.PROGRESS, VIOLATED, why)
         out[Lemma.TERMINATION] = made(Lemma.TERMINATION, VIOLATED, why)
         return out
-    progress_ok = all(v == "PROVED" for v in verdicts(enabled))
+    from .refine import KEY as COVERAGE
+    from .refine import refinement_gap
+
+    gap = refinement_gap(rows)  # every decision of decide in a declared case (progress/coverage-cases)
+    rows_ok = all(v == "PROVED" for v in verdicts(enabled))
+    progress_ok = rows_ok and gap is None
     enabled_rows = [by_key[k] for k in enabled if k in by_key]
+    covered = [by_key[COVERAGE]] if gap is None else []
     connected = entry_for(str(Lemma.CONNECTIVITY), encoding_of(model))
     link = judge(connected, model, list(rows)).verdict if connected is not None else "no safety encoding"
     premise = (
@@ -530,13 +540,19 @@ def live_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, L
     )
     if progress_ok:
         out[Lemma.PROGRESS] = made(
-            Lemma.PROGRESS, PROVED, "every enabledness row PROVED", rests_on(model, enabled_rows, more=(premise,))
+            Lemma.PROGRESS,
+            PROVED,
+            "every enabledness row PROVED, every decision in a declared case",
+            rests_on(model, [*enabled_rows, *covered], more=(premise,)),
         )
     else:
-        out[Lemma.PROGRESS] = made(Lemma.PROGRESS, NOT_PROVED, open_text(enabled))
+        why = "; ".join(t for t in ((open_text(enabled) if not rows_ok else ""), gap or "") if t)
+        out[Lemma.PROGRESS] = made(Lemma.PROGRESS, NOT_PROVED, why)
     missing: list[str] = []
-    if not progress_ok:
+    if not rows_ok:
         missing.append("progress not proved")
+    if gap is not None:
+        missing.append(gap)
     if not all(v == "PROVED" for v in verdicts(measure)):
         missing.append("measure: " + open_text(measure))
     bounds = measure_bounds(model, rows)
@@ -557,7 +573,7 @@ def live_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, L
         Lemma.TERMINATION,
         PROVED,
         "progress, the measure and its bound, no-collision and connectivity",
-        rests_on(model, [*enabled_rows, *measure_rows], more=more),
+        rests_on(model, [*enabled_rows, *measure_rows, *covered], more=more),
     )
     return out
 

@@ -48,6 +48,7 @@ from .tasks import (
     ENCODED,
     LEMMAS,
     PAPER_PART_NOTE,
+    CoverageSpec,
     GlobalTask,
     NotEncodedModel,
     ProofResult,
@@ -203,9 +204,11 @@ def prove(
     from .legs import prove_leg
     from .live import prove_live
 
+    covers = [k for k, task in enumerate(tasks) if isinstance(task, CoverageSpec)]
+    solved = [k for k in range(len(tasks)) if k not in covers]
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
     calls: list[tuple[Callable[..., ProofResult], tuple[Any, ...], dict[str, Any]]] = []
-    for task in tasks:
+    for task in (tasks[k] for k in solved):
         if isinstance(task, LegSpec):
             calls.append((decided, (prove_leg, model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, LiveSpec):
@@ -230,13 +233,27 @@ def prove(
             progress(task_key(tasks[k]))
 
     def overrun(k: int, seconds: float) -> ProofResult:
-        return overrun_result(tasks[k], seconds, timeout, out)
+        return overrun_result(tasks[solved[k]], seconds, timeout, out)
 
     def start(k: int) -> None:
         if on_start:
             on_start(task_key(tasks[k]))
 
-    run_fresh(calls, workers, done, limit=hard_limit(timeout), overrun=overrun, on_start=start)
+    run_fresh(
+        calls,
+        workers,
+        lambda k, result: done(solved[k], result),
+        limit=hard_limit(timeout),
+        overrun=overrun,
+        on_start=lambda k: start(solved[k]),
+    )
+    for k in covers:  # no solver budget: every view is read once (the views' own processes share the cores)
+        from .refine import prove_coverage
+
+        views = tasks[k].views  # type: ignore[union-attr]
+        start(k)
+        exhaustive = views is None
+        done(k, prove_coverage(model, exhaustive=exhaustive, sample=views or 0, processes=workers))
     return [r for r in results if r is not None]
 
 

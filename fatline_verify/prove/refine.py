@@ -671,7 +671,7 @@ def prove_coverage(model: Model, *, exhaustive: bool = False, sample: int = 2000
         verdict = Verdict.INCONCLUSIVE
         reason = (
             f"{got.views} random {where} each in a declared case with decide's destination; not every view was "
-            f"checked (fatline cover --all checks every one){overlap}"
+            f"checked (fatline prove --coverage all, or fatline cover --all, checks every one){overlap}"
         )
     reason += f" ({got.seconds:.1f} s, {got.rate:.0f} views/s; the cases compiled in {got.compiling:.1f} s)"
     return ProofResult(

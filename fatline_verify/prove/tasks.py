@@ -117,9 +117,35 @@ class GlobalTask:
         return f"{self.lemma}/{GLOBAL}-any"
 
 
-Task = Spec | GlobalTask | LegSpec | LiveSpec
+@dataclass(frozen=True, slots=True)
+class CoverageSpec:
+    """The liveness cases held to ``decide`` on views (:mod:`fatline_verify.prove.refine`): the row
+    ``progress/coverage-cases``, without which no liveness verdict is PROVED (the enabledness and measure
+    rows speak of the declared cases only). ``views``: ``None`` every view of the model's lattice (a
+    PROVED is possible: ``fatline prove --coverage all``), else a random sample of that many (covered:
+    INCONCLUSIVE; the default, seconds rather than minutes)."""
+
+    views: int | None = 20_000
+    lemma: Lemma = Lemma.PROGRESS
+    form: str = "coverage"
+    case: str = "cases"
+
+    @property
+    def name(self) -> str:
+        return self.case
+
+    @property
+    def other(self) -> str:
+        return ""
+
+    @property
+    def key(self) -> str:
+        return f"{self.lemma}/{self.form}-{self.case}"
+
+
+Task = Spec | GlobalTask | LegSpec | LiveSpec | CoverageSpec
 """An obligation: a decision case of the paper's rules, the global form, a repaired rule set's leg,
-or a liveness obligation."""
+a liveness obligation, or the liveness cases' coverage of ``decide``."""
 
 
 def rule_groups(cases: Sequence[Case]) -> list[tuple[str, tuple[Case, ...]]]:
@@ -249,7 +275,8 @@ def _live_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
         if set(lemmas) <= {Lemma.PROGRESS}:
             raise NotEncodedModel(f"{problem}; expected a model with goal=vertical-line for --lemma progress")
         asked = tuple(lemma for lemma in asked if lemma is not Lemma.PROGRESS)
-    return list(live_specs(model, live_cases(model), asked))
+    specs: list[Task] = list(live_specs(model, live_cases(model), asked))
+    return specs + ([CoverageSpec()] if asked else [])
 
 
 def _repaired_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
