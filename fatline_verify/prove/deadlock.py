@@ -28,7 +28,6 @@ from ..lemmas.properties import Lemma
 from ..model.config import Model
 from ..model.numbers import Point, show_point
 from ..model.swarm import is_connected, is_goal
-from ..rules import registry
 from ..rules.paper.algorithm import Decision
 from ..schedulers.round import decide_all
 from ..trace.simulate import Outcome, Run
@@ -48,7 +47,9 @@ def named_robots(state: Sequence[Point], model: Model) -> list[int]:
 def named_cases(model: Model, state: Sequence[Point], decisions: Mapping[int, Decision]) -> dict[str, int]:
     """Each live case a named robot of ``state`` decides, with the first such robot (in robot order)."""
     found: dict[str, int] = {}
-    paper = registry.of(model).prover == "paper"
+    from .tasks import encoding_name
+
+    paper = encoding_name(model) == "paper"  # the paper's rules: case_of names the case (no solver)
     for i in named_robots(state, model):
         if paper:
             from ..rules.paper.cases import case_of
