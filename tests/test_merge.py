@@ -36,6 +36,7 @@ def _fake_prove(verdict: Verdict):
         given=(),
         on_start=None,
         corpus=True,
+        deadlocks=(),
     ):
         tasks = prover.tasks_for(model, lemmas) if tasks is None else tasks
         results = []

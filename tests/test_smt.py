@@ -181,7 +181,18 @@ def test_forms_follow_the_scheduler():
     assert (
         forms["ssync"]
         == forms["fsync"]
-        == {"one-mover", "two-movers", "closer", "global", "seen", "on-rma", "x-nondecreasing", "enabled", "measure"}
+        == {
+            "one-mover",
+            "two-movers",
+            "closer",
+            "global",
+            "seen",
+            "on-rma",
+            "x-nondecreasing",
+            "enabled",
+            "measure",
+            "coverage",
+        }
     )
     assert "two-movers" not in {getattr(t, "form", "") for t in tasks_for(make_model(), two_movers=False)}
     central = tasks_for(make_model(scheduler="centralized"), two_movers=True)

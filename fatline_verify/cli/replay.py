@@ -122,6 +122,12 @@ def cmd_replay(args: argparse.Namespace) -> int:
     override = model_arg(args.model) if args.model is not None else None
     picture = claim_dir(args.picture, name="picture") if args.picture is not None else None
     docs = [(name, load_trace(name)) for name in args.traces]
+    if override is None:  # each trace replays under its own model: a model no longer valid is bad input
+        for name, doc in docs:
+            try:
+                trace_model(doc)
+            except FatlineError as exc:
+                raise type(exc)(f"{name}: {exc}") from None
     under = f" under {override.name}" if override is not None else ""
     counts: dict[str, int] = {}
     for name, doc in docs:

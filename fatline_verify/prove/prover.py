@@ -277,7 +277,7 @@ def overrun_result(task: Task, seconds: float, timeout: float, out: Path | None)
     path = (out / lemma / name).as_posix() if out is not None else ""
     if isinstance(task, GlobalTask):
         return ProofResult(task.lemma, task.form, "any", Verdict.INCONCLUSIVE, 0, False, seconds, reason, path)
-    if isinstance(task, LegSpec | LiveSpec):
+    if isinstance(task, LegSpec | LiveSpec | CoverageSpec):
         rule, case, other = "any", task.name, task.other
     else:
         rule, case, other = task.mine[0].rule.value, task.name, task.other_name

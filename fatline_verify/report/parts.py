@@ -67,7 +67,8 @@ table.matrix { width: 100%; font-size: 0.76em; }
 .matrix td.model { white-space: nowrap; }
 .matrix td.readings { min-width: 10em; max-width: 14em; }
 .matrix td.readings code { font-size: 0.95em; }
-.matrix .robots, .matrix .rows { color: #555; white-space: nowrap; }
+.matrix .robots { color: #555; white-space: nowrap; }
+.matrix .rows { color: #555; }
 .nowrap { white-space: nowrap; }
 .viewer { border: 1px solid #ccc; padding: 0.6em; margin: 1em 0; overflow-wrap: anywhere; }
 .viewer img { max-width: 100%; height: auto; display: block; margin: 0.5em 0; }

@@ -568,7 +568,8 @@ def test_the_scheduler_s_k_is_set_in_the_model_file_and_changes_the_rounds(tmp_p
     for k in (1, 2, 4):
         out = tmp_path / f"k{k}.json"
         model = _pairs_model(tmp_path, f"[scheduler]\nk = {k}\n", f"pairs-k{k}")
-        got = fatline("check", str(model), "--robots", "4", "--json", str(out), "--traces", str(tmp_path), "-q")
+        traces = tmp_path / f"traces-k{k}"
+        got = fatline("check", str(model), "--robots", "4", "--json", str(out), "--traces", str(traces), "-q")
         assert got.returncode == 1, got.stderr
         data = json.loads(out.read_text())
         assert data["model"]["scheduler"] == {"k": k}
