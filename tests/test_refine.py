@@ -18,6 +18,7 @@ import z3
 from fatline_verify.lemmas.properties import Lemma, Verdict
 from fatline_verify.model.config import load_model, model_from_mapping
 from fatline_verify.prove import refine
+from fatline_verify.prove import views as lattice_views
 from fatline_verify.prove.live import prove_live
 from fatline_verify.prove.smt.cases import Arith, same
 from fatline_verify.prove.smt.live_rules import LiveCase, live_cases
@@ -39,15 +40,15 @@ def paper():
 def test_the_views_at_q1_rad4_are_counted_as_the_issue_says(paper) -> None:
     """40 points a robot can see another at (49 lattice points within 4, less the 9 within the
     decider's own disc's reach), and 1,624,375 sets of them with disjoint discs, the empty one included."""
-    points = refine.view_points(paper)
+    points = lattice_views.view_points(paper)
     assert len(points) == 40
     assert all(4 <= x * x + y * y <= 16 for x, y in points)
-    assert refine.count_views(paper) == 1_624_375
+    assert lattice_views.count_views(paper) == 1_624_375
 
 
 def _grown(model) -> set[frozenset[tuple[int, int]]]:
     """Every view, by another route: grown one robot at a time from the empty view."""
-    points = refine.view_points(model)
+    points = lattice_views.view_points(model)
     level = {frozenset()}
     seen = set(level)
     while level:
@@ -63,8 +64,8 @@ def _grown(model) -> set[frozenset[tuple[int, int]]]:
 
 def test_the_enumeration_is_every_view_once_on_a_smaller_lattice() -> None:
     small = model_from_mapping({"name": "small", "rules": "paper", "parameters": {"rad_v": 3, "q": 1}})
-    views = list(refine.all_views(small))
-    assert len(views) == len(set(views)) == refine.count_views(small)
+    views = list(lattice_views.all_views(small))
+    assert len(views) == len(set(views)) == lattice_views.count_views(small)
     assert {frozenset(v) for v in views} == _grown(small)
     assert views[0] == ()
 
@@ -94,7 +95,7 @@ def test_the_compiled_cases_agree_with_z3_on_random_views(paper) -> None:
     cases z3 finds roles for, among all 29 of the paper's cases."""
     cases, get = refine.checkers(paper)
     rng = random.Random(3)
-    views = list(refine.random_views(paper, 10, seed=11))
+    views = list(lattice_views.random_views(paper, 10, seed=11))
     matched = 0
     for view in views:
         dest = registry.decide(view, paper).destination
@@ -291,7 +292,7 @@ def test_the_paper_with_scenario_1_left_out_is_caught_on_its_views(paper) -> Non
     )  # fmt: skip
     try:
         model = model_from_mapping({"name": "paper-no-s1", "rules": "paper-no-s1", "parameters": {"rad_v": 4, "q": 1}})
-        views = [v for v in refine.random_views(paper, 2000, seed=5) if len(v) <= 4]  # few sizes to compile
+        views = [v for v in lattice_views.random_views(paper, 2000, seed=5) if len(v) <= 4]  # few sizes to compile
         s1 = [v for v in views if registry.decide(v, paper).rule == "scenario-1"][:8]
         others = [v for v in views if registry.decide(v, paper).rule != "scenario-1"][:8]
         assert len(s1) == 8 and len(others) == 8

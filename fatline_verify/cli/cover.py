@@ -28,7 +28,8 @@ from .common import (
 
 
 def cmd_cover(args: argparse.Namespace) -> int:
-    from ..prove.refine import count_views, prove_coverage
+    from ..prove.refine import prove_coverage
+    from ..prove.views import count_views
 
     model = model_arg(args.model)
     if registry.of(model).liveness is None:

@@ -34,6 +34,7 @@ from ..model.options import Scheduler
 from ..rules import registry
 from .basis import counts_text
 from .goals import goal_problem
+from .rests import LEGS_FACTS, Fact, rests_on
 
 PROVED, VIOLATED, NOT_PROVED, NOT_ENCODED = "PROVED", "VIOLATED", "NOT PROVED", "NOT ENCODED"
 LEMMA_VERDICTS = (VIOLATED, NOT_ENCODED, NOT_PROVED, PROVED)
@@ -49,34 +50,6 @@ def _two_movers(model: Model) -> str:
     if model.options.scheduler is Scheduler.CENTRALIZED:
         return "one robot moves per round (centralized): no two robots move at once"
     return ""
-
-
-@dataclass(frozen=True)
-class Fact:
-    """A fact about the rules' code that a lemma's argument uses and no obligation of its proves: what it
-    says and how it is checked (exhaustively over every view at q = 1, by a test, by inspection)."""
-
-    name: str
-    says: str
-    checked: str
-
-
-LEGS_FACTS = (
-    Fact(
-        "legs",
-        "every move of the repaired rules is one leg (horizontal right, top, bottom) that repairs.allowed passed, "
-        "whatever rule chose it",
-        "by test on the repaired rules' own decide: random swarms (tests/test_legs.py), 1,500 random views of the "
-        "lattice q = 1 (tests/test_facts.py), every view at q = 1 in the slow tier (fatline_verify/prove/facts.py)",
-    ),
-    Fact(
-        "lock",
-        "a robot that sees a robot strictly left of it stays (so the bridge robot b of a bridged edge is at rest)",
-        "by test on the repaired rules' own decide: random swarms (tests/test_legs.py), 1,500 random views of the "
-        "lattice q = 1 (tests/test_facts.py), every view at q = 1 in the slow tier (fatline_verify/prove/facts.py)",
-    ),
-)
-"""What the repaired rules' leg obligations rest on beside their rows (:mod:`fatline_verify.prove.smt.legs`)."""
 
 
 @dataclass(frozen=True)
@@ -335,55 +308,6 @@ def judge(entry: Entry, model: Model, rows: list[dict[str, Any]]) -> LemmaVerdic
     )
 
 
-_LATTICE = re.compile(r"lattice q=(\d+)")
-
-
-def lattices(rows: Sequence[dict[str, Any]]) -> str:
-    """Where PROVED ``rows`` were proved: over the reals (every real configuration), on the lattice
-    q = k (a per-lattice argument: the verdict is for that lattice only), or both."""
-    qs = sorted({int(m.group(1)) for r in rows if (m := _LATTICE.search(str(r.get("reason", ""))))})
-    reals = any(not _LATTICE.search(str(r.get("reason", ""))) for r in rows)
-    parts = (["over the reals (every lattice)"] if reals else []) + [f"on the lattice q = {q} only" for q in qs]
-    return "; ".join(parts) or "no rows"
-
-
-def solver() -> str:
-    """The solver the rows were decided by, with its version (read without importing it)."""
-    from importlib import metadata
-
-    try:
-        return f"z3 {metadata.version('z3-solver')}"
-    except metadata.PackageNotFoundError:  # pragma: no cover - z3 is a dependency
-        return "z3 (version unknown)"
-
-
-def rests_on(
-    model: Model, rows: Sequence[dict[str, Any]], facts: Sequence[Fact] = (), more: Sequence[str] = ()
-) -> tuple[str, ...]:
-    """What a lemma-level PROVED rests on: its obligation rows (by form and basis), the facts assumed and
-    how each is checked, the lattice, the scheduler and motion, the solver, and ``more`` (other lemmas)."""
-    forms = ", ".join(f"{n} {f}" for f, n in _form_counts(rows).items())
-    split = f"; {counts_text(list(rows))}" if any(r.get("basis") for r in rows) else ""
-    out = [f"obligations: {len(rows)} PROVED ({forms}{split})"]
-    out += [f"assumed: {f.name}: {f.says} (checked: {f.checked})" for f in facts]
-    out += list(more)
-    out += [
-        f"lattice: {lattices(rows)}",
-        f"rounds: scheduler {model.options.scheduler}, motion {model.options.motion}, timing {model.options.timing}; "
-        "one shared snapshot per round, exact arithmetic, unit discs",
-        f"rule set: {model.rules} ({registry.of(model).summary.rstrip('.')})",
-        f"solver: {solver()}",
-    ]
-    return tuple(out)
-
-
-def _form_counts(rows: Sequence[dict[str, Any]]) -> dict[str, int]:
-    out: dict[str, int] = {}
-    for r in rows:
-        out[str(r.get("form"))] = out.get(str(r.get("form")), 0) + 1
-    return out
-
-
 def part_forms_seen(entry: Entry, by_form: dict[str, list[dict[str, Any]]]) -> bool:
     return any(f in by_form for p in (*entry.parts, *entry.beside) for f in p.forms)
 
@@ -606,16 +530,13 @@ __all__ = [
     "TABLE",
     "VIOLATED",
     "Entry",
-    "Fact",
     "LemmaVerdict",
     "Part",
     "judge",
-    "lattices",
     "legs_lemma",
     "lemma_verdicts",
     "live_verdicts",
     "liveness_verdicts",
     "measure_bounds",
     "paper_lemma",
-    "rests_on",
 ]

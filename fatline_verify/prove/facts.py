@@ -1,7 +1,7 @@
 """The facts about the repaired rules' code that their leg obligations rest on, checked on views.
 
 The leg obligations (:mod:`fatline_verify.prove.smt.legs`) prove safety "whatever rule chose the move",
-from two facts about ``decide`` that no obligation states (:data:`fatline_verify.prove.coverage.LEGS_FACTS`):
+from two facts about ``decide`` that no obligation states (:data:`fatline_verify.prove.rests.LEGS_FACTS`):
 
 - **legs**: every move is one leg (:func:`~fatline_verify.rules.repaired.algorithm.leg_of`: horizontal
   right, top, bottom) whose conditions hold for every robot the mover sees
@@ -11,7 +11,7 @@ from two facts about ``decide`` that no obligation states (:data:`fatline_verify
   mover strictly left of it, is at rest).
 
 Both read only what one robot sees, so they are facts about ``decide`` on a *view*
-(:func:`fatline_verify.prove.refine.all_views`: every input ``decide`` can get on the model's lattice).
+(:func:`fatline_verify.prove.views.all_views`: every input ``decide`` can get on the model's lattice).
 :func:`check_facts` checks them on every view (exhaustive at q = 1: the slow tier) or on a sample.
 The z3 terms of the leg conditions are evaluated on the view's numbers (``z3.simplify`` of ground terms).
 """
@@ -30,9 +30,9 @@ from ..model.numbers import show_point
 from ..rules import registry
 from ..rules.paper.algorithm import Decision
 from ..rules.repaired.algorithm import Leg, leg_of
-from .refine import View, all_views, random_views
 from .smt.cases import Arith, Pt
 from .smt.legs import Mover, bridged, conditions, kept
+from .views import View, all_views, random_views
 
 SHOWN = 5
 """Counterexamples kept per fact (the first ones, in enumeration order)."""
