@@ -384,24 +384,29 @@ def _part_verdict(model: Model, rows: Sequence[dict[str, Any]], lemma: str, part
     return judge(Entry(entry.lemma, entry.encoding, chosen, f"{lemma}'s {part} part"), model, list(rows))
 
 
-def _safety(model: Model, rows: Sequence[dict[str, Any]]) -> tuple[list[str], list[LemmaVerdict]]:
-    """No-collision and connectivity at lemma level from ``model``'s own rows: what is missing, and the
-    verdicts that are PROVED."""
-    missing: list[str] = []
-    proved: list[LemmaVerdict] = []
+def _safety(model: Model, rows: Sequence[dict[str, Any]]) -> dict[str, LemmaVerdict | None]:
+    """No-collision and connectivity at lemma level from ``model``'s own rows (``None``: the rule set has no
+    safety encoding, so no such rows)."""
+    out: dict[str, LemmaVerdict | None] = {}
     for lemma in (str(Lemma.NO_COLLISION), str(Lemma.CONNECTIVITY)):
         entry = entry_for(lemma, encoding_of(model))
-        if entry is None:
+        out[lemma] = None if entry is None else judge(entry, model, list(rows))
+    return out
+
+
+def _unsafe(model: Model, safety: dict[str, LemmaVerdict | None]) -> list[str]:
+    """What termination misses of no-collision and connectivity (:func:`_safety`), one entry a lemma."""
+    missing = []
+    for lemma, v in safety.items():
+        if v is None:
             missing.append(f"{lemma}: no obligations (the rule set has no safety encoding)")
+        elif v.verdict == PROVED:
             continue
-        v = judge(entry, model, list(rows))
-        if v.verdict == PROVED:
-            proved.append(v)
         elif not v.rows:
             missing.append(f"{lemma}: no rows (run fatline prove {model.ref} with every lemma)")
         else:
             missing.append(f"{lemma} {v.verdict}")
-    return missing, proved
+    return missing
 
 
 def live_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, LemmaVerdict]:
@@ -456,8 +461,9 @@ def live_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, L
     progress_ok = rows_ok and gap is None
     enabled_rows = [by_key[k] for k in enabled if k in by_key]
     covered = [by_key[COVERAGE]] if gap is None else []
-    connected = entry_for(str(Lemma.CONNECTIVITY), encoding_of(model))
-    link = judge(connected, model, list(rows)).verdict if connected is not None else "no safety encoding"
+    safety = _safety(model, rows)
+    connected = safety[str(Lemma.CONNECTIVITY)]
+    link = connected.verdict if connected is not None else "no safety encoding"
     premise = (
         "premise: the claim is about connected non-goal configurations (whether the rules keep a swarm "
         f"connected is connectivity's own lemma; here: {link})"
@@ -481,8 +487,7 @@ def live_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, L
         missing.append("measure: " + open_text(measure))
     bounds = measure_bounds(model, rows)
     missing += [f"the measure's bound: component {list(c)}: {why}" for c, why, ok in bounds if not ok]
-    unsafe, safe = _safety(model, rows)
-    missing += unsafe
+    missing += _unsafe(model, safety)
     if missing:
         out[Lemma.TERMINATION] = made(Lemma.TERMINATION, NOT_PROVED, "; ".join(missing))
         return out
@@ -490,7 +495,7 @@ def live_verdicts(model: Model, rows: Sequence[dict[str, Any]]) -> dict[Lemma, L
     more = (
         "progress: PROVED (every enabledness row)",
         *(f"bound of component {list(c)}: {why}" for c, why, _ in bounds),
-        *(f"{v.lemma}: PROVED ({v.counts})" for v in safe),
+        *(f"{v.lemma}: PROVED ({v.counts})" for v in safety.values() if v is not None),
         f"fair scheduler ({model.options.scheduler}): an enabled robot is activated within finitely many rounds",
     )
     out[Lemma.TERMINATION] = made(
