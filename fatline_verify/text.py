@@ -23,7 +23,8 @@ from .model.config import Model
 from .model.numbers import Point, format_number, parse_number
 from .model.options import CATALOGUE, Options
 from .rules import registry
-from .rules.paper.algorithm import Decision, Rule
+from .rules.decision import Decision
+from .rules.paper.algorithm import Rule
 from .schedulers.round import decide_all
 from .trace.traces import trace_model
 

@@ -28,7 +28,7 @@ from ..lemmas.properties import Lemma
 from ..model.config import Model
 from ..model.numbers import Point, show_point
 from ..model.swarm import is_connected, is_goal
-from ..rules.paper.algorithm import Decision
+from ..rules.decision import Decision
 from ..schedulers.round import decide_all
 from ..trace.simulate import Outcome, Run
 

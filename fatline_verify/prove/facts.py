@@ -28,7 +28,7 @@ import z3
 from ..model.config import Model
 from ..model.numbers import show_point
 from ..rules import registry
-from ..rules.paper.algorithm import Decision
+from ..rules.decision import Decision
 from ..rules.repaired.algorithm import Leg, leg_of
 from .smt.cases import Arith, Pt
 from .smt.legs import Mover, bridged, conditions, kept

@@ -34,7 +34,7 @@ from ..model.numbers import Point, show_point
 from ..model.options import Motion, Scheduler
 from ..model.swarm import initial_problems, is_goal
 from ..rules import registry
-from ..rules.paper.algorithm import Decision
+from ..rules.decision import Decision
 from ..schedulers.round import decide_all
 from ..trace.simulate import Outcome, Run
 from .corpus import GIVEN, SEARCH

@@ -16,7 +16,8 @@ from ..model.geometry import dist2
 from ..model.numbers import Point, show_point
 from ..model.options import Scheduler
 from ..model.swarm import initial_problems
-from ..rules.paper.algorithm import Band, Decision
+from ..rules.decision import Decision
+from ..rules.paper.algorithm import Band
 from ..rules.paper.cases import case_of
 from ..schedulers.activation import scheduler_for
 from ..schedulers.round import Collision, decide_all, lost_edges, play_round

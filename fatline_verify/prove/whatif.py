@@ -29,7 +29,8 @@ from ..model.numbers import Point
 from ..model.swarm import initial_problems, is_connected
 from ..repair.reach import PROVED as PROVED_KINDS
 from ..repair.reach import Family, Kind, left_alone_reach
-from ..rules.paper.algorithm import ORIGIN, Decision, Rule
+from ..rules.decision import ORIGIN, Decision
+from ..rules.paper.algorithm import Rule
 from ..rules.repaired.options import RepairProgress
 from ..schedulers.round import closest_dist2, collides, disconnection, lost_edges, play_round, snapshot
 from .search import Budget, rounds, rounds_text

@@ -58,7 +58,8 @@ from ..model.config import Model
 from ..model.numbers import Point
 from ..model.options import Goal
 from ..model.swarm import is_goal
-from ..rules.paper.algorithm import ORIGIN, Decision, Rule
+from ..rules.decision import ORIGIN, Decision
+from ..rules.paper.algorithm import Rule
 from ..rules.repaired.algorithm import allowed, locked
 from ..rules.repaired.options import RepairLock, RepairProgress
 from ..schedulers.activation import scheduler_for

@@ -44,7 +44,7 @@ from ..model.geometry import Path, point_at, subpath
 from ..model.numbers import Point, normalize
 from ..model.options import Motion, Scheduler
 from ..model.swarm import State, is_goal
-from ..rules.paper.algorithm import Decision
+from ..rules.decision import Decision
 from ..rules.registry import decider
 from .base import Codec, Expansion, Marks
 from .round import Violation, claimed, collisions, disconnection, global_path, rma_violations, snapshot

@@ -35,7 +35,7 @@ from ..model.geometry import Path
 from ..model.numbers import Point
 from ..model.options import Scheduler
 from ..model.swarm import State
-from ..rules.paper.algorithm import Decision
+from ..rules.decision import Decision
 from .round import Violation
 
 

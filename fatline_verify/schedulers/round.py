@@ -19,7 +19,7 @@ from ..model.numbers import Number, Point
 from ..model.options import Contact, Timing
 from ..model.swarm import State, components, is_connected
 from ..rules import registry
-from ..rules.paper.algorithm import Decision
+from ..rules.decision import Decision
 from ..rules.registry import decider
 
 

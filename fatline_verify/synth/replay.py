@@ -18,7 +18,8 @@ from ..model.config import Model
 from ..model.options import Scheduler
 from ..model.swarm import is_goal
 from ..repair.reach import Family, Kind, State, canonical, family_legs, starts
-from ..rules.paper.algorithm import ORIGIN, Decision, Rule
+from ..rules.decision import ORIGIN, Decision
+from ..rules.paper.algorithm import Rule
 from ..schedulers.round import play_round
 from .table import Table, view_of
 

@@ -12,7 +12,7 @@ from typing import Any
 from ..model.config import Model
 from ..model.numbers import Number, Point, format_number
 from ..model.swarm import State
-from ..rules.paper.algorithm import Decision
+from ..rules.decision import Decision
 from ..schedulers.round import Collision, Disconnection, RmaMoved, RoundResult, Violation
 
 

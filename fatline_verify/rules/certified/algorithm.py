@@ -86,7 +86,7 @@ from ...model.config import Model
 from ...model.geometry import dist2, path_point_dist2, segment_segment_dist2
 from ...model.numbers import Point
 from ...model.options import Contact
-from ..paper.algorithm import ORIGIN, Decision
+from ..decision import ORIGIN, Decision
 
 DOWN_GAP = 3
 """Radii: a robot that sees nothing right of it contracts down to this gap above the robot below it."""

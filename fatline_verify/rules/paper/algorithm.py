@@ -11,7 +11,7 @@ It works on ``int`` and ``Fraction`` alike; nothing here rounds.
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from enum import StrEnum
 
 from ...model.config import Model
@@ -32,8 +32,7 @@ from ...model.options import (
     Uncovered,
     Vacant,
 )
-
-ORIGIN: Point = (0, 0)
+from ..decision import ORIGIN, Decision
 
 
 class Band(StrEnum):
@@ -120,30 +119,6 @@ class Candidate:
     point: Point
     vacant: bool
     blocker: Point | None = None
-
-
-@dataclass(frozen=True, slots=True)
-class Decision:
-    """The outcome of Compute for one robot, relative to that robot (it sits at the origin)."""
-
-    rule: Rule
-    destination: Point
-    path: Path
-    classification: tuple[tuple[Point, frozenset[Band]], ...] = field(repr=False)
-    psi: Number | None = None
-    r_psi: tuple[Point, ...] = field(default=(), repr=False)
-    candidates: tuple[Candidate, ...] = field(default=(), repr=False)
-    case: Case | None = None
-    """The case (Scenario 2, 3 or uncovered) whose search found nothing, when Scenario 4 or a stay followed."""
-
-    @property
-    def moves(self) -> bool:
-        """Whether the destination differs from the current position (the robot is *enabled*)."""
-        return self.destination != ORIGIN
-
-    def members(self, band: Band) -> tuple[Point, ...]:
-        """The visible robots ``r`` put in ``band``."""
-        return tuple(c for c, m in self.classification if band in m)
 
 
 # --- Look: classification into A ... I ----------------------------------------------------------

@@ -79,7 +79,8 @@ from ...model.config import Model
 from ...model.geometry import Path, dist2, path_point_dist2, segment_segment_dist2
 from ...model.numbers import Number, Point
 from ...model.options import Contact, PathShape
-from ..paper.algorithm import ORIGIN, Decision, Rule, _path, _stay
+from ..decision import ORIGIN, Decision
+from ..paper.algorithm import Rule, _path, _stay
 from .options import (
     RepairApproach,
     RepairClear,

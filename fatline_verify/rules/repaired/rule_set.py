@@ -4,7 +4,8 @@ from collections.abc import Sequence
 from typing import Any
 
 from ...model.options import CATALOGUE
-from ..paper.algorithm import Decision, paper_decide
+from ..decision import Decision
+from ..paper.algorithm import paper_decide
 from ..paper.rule_set import READINGS
 from ..registry import Encoding, RuleSet, register, register_encoding
 from .algorithm import repair

@@ -18,7 +18,7 @@ from typing import Any
 from ...errors import InvalidModel
 from ...integrity import sealed
 from ...synth.table import Table, parse_view
-from ..paper.algorithm import ORIGIN, Decision
+from ..decision import ORIGIN, Decision
 
 TABLES = Path(__file__).resolve().parent / "tables"
 """The shipped tables: ``fatline synth --json`` files (one rule set each, ``table-<file stem>``)."""

@@ -17,7 +17,7 @@ import z3
 
 from fatline_verify.prove.smt.cases import same, sees
 from fatline_verify.prove.smt.live_rules import LiveCase
-from fatline_verify.rules.paper.algorithm import Decision
+from fatline_verify.rules.decision import Decision
 from fatline_verify.rules.paper.rule_set import CASES
 from fatline_verify.rules.registry import Liveness, RuleSet, register
 
