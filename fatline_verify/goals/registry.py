@@ -112,10 +112,16 @@ def register_goal(goal: Goal) -> Goal:
     return goal
 
 
+_BUILTIN: list[bool] = []
+"""Whether this package's goals are registered (one import, not one a lookup: the scalar engine asks per state)."""
+
+
 def _load(*, plugins: bool = True) -> None:
     """This package's goals, and (``plugins``) the installed plug-ins' (loaded with the rule sets)."""
-    from . import builtin  # noqa: F401  (registers the built-in goals)
+    if not _BUILTIN:
+        from . import builtin  # noqa: F401  (registers the built-in goals)
 
+        _BUILTIN.append(True)
     if plugins:
         from ..rules import registry as rules
 
