@@ -33,27 +33,23 @@ def step_to_corner(snapshot, model):
     return Decision("step", step, ((0, 0), step), ())
 
 
-register(
-    RuleSet(
-        "step-to-corner",
-        step_to_corner,
-        "Point robots: one lattice step toward the left-most lowest robot seen.",
-        lemmas=("connectivity", "progress", "termination"),
-        goal="point",
-        robots="points",
-        labels={"step": "a king's step toward the left-most lowest robot seen", "corner": "it is that robot"},
+LABELS = {"step": "a king's step toward the left-most lowest robot seen", "corner": "it is that robot"}
+
+for name, goal, summary in (
+    ("step-to-corner", "point", "Point robots: one lattice step toward the left-most lowest robot seen."),
+    ("step-to-corner-row", "same-row", "step-to-corner judged against the goal same-row (the plug-in's)."),
+):
+    register(
+        RuleSet(
+            name,
+            step_to_corner,
+            summary,
+            lemmas=("connectivity", "progress", "termination"),
+            goal=goal,
+            robots="points",
+            labels=LABELS,
+        )
     )
-)
-register(
-    RuleSet(
-        "step-to-corner-row",
-        step_to_corner,
-        "step-to-corner judged against the goal same-row (the plug-in's).",
-        lemmas=("connectivity", "progress", "termination"),
-        goal="same-row",
-        robots="points",
-    )
-)
 
 
 def same_row(state, model):
