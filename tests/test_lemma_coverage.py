@@ -134,13 +134,15 @@ def test_two_movers_are_needed_except_under_the_centralized_scheduler():
     assert v.verdict == PROVED and "no two robots move at once" in v.why
 
 
-def test_the_legs_need_the_repairs_own_rightward_obligations():
-    rows = [_row("no-collision", "leg", "PROVED", "horizontal", SUBSTANTIVE)]
-    rows += [_row("approach", "x-nondecreasing", "PROVED", "scenario-1", IMMEDIATE)]
+def test_a_familys_lemmas_need_the_row_that_holds_decide_to_it():
+    """The leg rows prove the family safe; without the in-family views row they say nothing of the rule set."""
+    rows = [_row("no-collision", "leg", "PROVED", c, SUBSTANTIVE) for c in ("horizontal", "top", "bottom")]
     v = _verdicts("repaired", rows)["no-collision"]
-    assert v.verdict == NOT_PROVED and "rightward: no obligation for repair-align, repair-approach" in v.why
-    rows += [_row("approach", "x-nondecreasing", "PROVED", f"repair-{k}.c", IMMEDIATE) for k in ("align", "approach")]
+    assert v.verdict == NOT_PROVED and "in-family: no rows" in v.why, v.why
+    rows += [_row("no-collision", "in-family-views", "PROVED", "any")]
     assert _verdicts("repaired", rows)["no-collision"].verdict == PROVED
+    rows[-1] = _row("no-collision", "in-family-views", "VIOLATED", "any")
+    assert _verdicts("repaired", rows)["no-collision"].verdict == NOT_PROVED
 
 
 def test_the_repairs_own_destinations_are_obligations():

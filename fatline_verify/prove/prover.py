@@ -254,7 +254,7 @@ def prove(
         task = tasks[k]
         start(k)
         if isinstance(task, ViewsSpec):
-            done(k, prove_views(model, task))
+            done(k, prove_views(model, task, sample=task.sample))
             continue
         views = task.views
         exhaustive = views is None

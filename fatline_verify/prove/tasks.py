@@ -158,6 +158,9 @@ class ViewsSpec:
     form: str = VIEWS_FORM
     name: str = "any"
     other: str = ""
+    sample: int | None = None
+    """``None``: every view of the lattice when it has at most a few million (PROVED possible); else a random
+    sample of that many (INCONCLUSIVE at best: ``fatline prove --views N``)."""
 
     @property
     def key(self) -> str:
