@@ -79,3 +79,15 @@ def test_a_rule_set_without_a_family_is_not_judged_in_family(tmp_path: Path) -> 
     out = tmp_path / "check.json"
     fatline("check", "paper", "--robots", "2", "--json", str(out), "--traces", str(tmp_path / "t"))
     assert "in-family" not in {r["lemma"] for r in json.loads(out.read_text())["lemmas"]}
+
+
+def test_simulate_stops_where_a_decision_leaves_the_family(tmp_path: Path) -> None:
+    """Every run judges the registered step lemmas its model has: simulate too, with a trace that replays."""
+    trace = tmp_path / "cheat.json"
+    got = fatline(
+        "simulate", str(SITE / "cheat-right.toml"), "--init", "0,0 3,0", "--schedule", "0;0;0", "--trace", str(trace)
+    )
+    assert got.returncode == 1, got.stdout + got.stderr
+    assert "witnesses in-family: r0" in got.stdout and "the remaining 1 scheduled round were not played" in got.stdout
+    again = fatline("replay", str(trace))
+    assert again.returncode == 0 and "in-family in round 2" in again.stdout, again.stdout
