@@ -35,7 +35,7 @@ from pathlib import Path
 
 from fatline_verify.text import table
 
-PRELOAD = "import fatline_verify.prove.search, fatline_verify.prove.legs, fatline_verify.prove.prover"
+PRELOAD = "import fatline_verify.prove.search, fatline_verify.prove.family, fatline_verify.prove.prover"
 """What a real obligation imports before it solves (``exec`` of it is a picklable call that returns None)."""
 
 

@@ -25,7 +25,7 @@ from typing import Any, cast
 
 Call = tuple[Callable[..., Any], tuple[Any, ...], dict[str, Any]]
 
-PRELOAD = ("fatline_verify.prove.search", "fatline_verify.prove.legs", "fatline_verify.prove.prover")
+PRELOAD = ("fatline_verify.prove.search", "fatline_verify.prove.family", "fatline_verify.prove.prover")
 """What the fork server imports once: every module an obligation's call needs (none of them creates a
 z3 context or a thread at import; ``tests/test_fresh.py`` checks that a call finds none)."""
 

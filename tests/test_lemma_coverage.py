@@ -11,14 +11,13 @@ from fatline_verify.lemmas.properties import Lemma, Verdict
 from fatline_verify.model.config import load_model
 from fatline_verify.prove.basis import IMMEDIATE, SUBSTANTIVE, VACUOUS, basis_of, counts_text, decided
 from fatline_verify.prove.coverage import NOT_ENCODED, NOT_PROVED, PROVED, TABLE, VIOLATED, lemma_verdicts
-from fatline_verify.prove.legs import prove_leg
+from fatline_verify.prove.family import prove_family
 from fatline_verify.prove.replay import replay_known
 from fatline_verify.prove.search import prove_spec
 from fatline_verify.prove.smt.claims import ON_RMA, SEEN, Spec
-from fatline_verify.prove.smt.legs import LegSpec
+from fatline_verify.prove.smt.family import FamilySpec
 from fatline_verify.prove.tasks import tasks_for
 from fatline_verify.rules.paper.cases import moving_cases
-from fatline_verify.rules.repaired.algorithm import Leg
 from fatline_verify.schedulers.round import decide_all
 
 
@@ -67,15 +66,16 @@ def test_seen_is_immediate_for_scenario_1():
     assert got.verdict is Verdict.PROVED and got.basis == IMMEDIATE
 
 
-def test_a_leg_obligation_that_needs_the_conditions_is_substantive():
+def test_a_family_obligation_that_needs_the_guard_is_substantive():
+    """A family's obligation is immediate when the classes' shapes alone decide it, substantive when it
+    needs a guard: r's horizontal leg against a robot at rest needs the clearance."""
     model = load_model("repaired")
-    spec = LegSpec(Lemma.NO_COLLISION, "leg", Leg.HORIZONTAL, "rest")
-    got = decided(prove_leg, model, spec, timeout=30, out=None)
+    spec = FamilySpec(Lemma.NO_COLLISION, "leg", "horizontal", "rest")
+    got = decided(prove_family, model, spec, timeout=30, out=None)
     assert got.verdict is Verdict.PROVED and got.basis == SUBSTANTIVE
-    # and the same obligation's kept twin is immediate: its own test says r's end sees o
-    kept = LegSpec(Lemma.CONNECTIVITY, "kept", Leg.HORIZONTAL, "rest")
-    got = decided(prove_leg, model, kept, timeout=30, out=None)
-    assert got.verdict is Verdict.PROVED and got.basis == IMMEDIATE
+    kept = FamilySpec(Lemma.CONNECTIVITY, "kept", "horizontal", "rest")
+    got = decided(prove_family, model, kept, timeout=30, out=None)
+    assert got.verdict is Verdict.PROVED and got.basis == SUBSTANTIVE
 
 
 def test_a_row_that_cannot_fire_is_vacuous_however_unsat_was_reached():
@@ -134,13 +134,15 @@ def test_two_movers_are_needed_except_under_the_centralized_scheduler():
     assert v.verdict == PROVED and "no two robots move at once" in v.why
 
 
-def test_the_legs_need_the_repairs_own_rightward_obligations():
-    rows = [_row("no-collision", "leg", "PROVED", "horizontal", SUBSTANTIVE)]
-    rows += [_row("approach", "x-nondecreasing", "PROVED", "scenario-1", IMMEDIATE)]
+def test_a_familys_lemmas_need_the_row_that_holds_decide_to_it():
+    """The leg rows prove the family safe; without the in-family views row they say nothing of the rule set."""
+    rows = [_row("no-collision", "leg", "PROVED", c, SUBSTANTIVE) for c in ("horizontal", "top", "bottom")]
     v = _verdicts("repaired", rows)["no-collision"]
-    assert v.verdict == NOT_PROVED and "rightward: no obligation for repair-align, repair-approach" in v.why
-    rows += [_row("approach", "x-nondecreasing", "PROVED", f"repair-{k}.c", IMMEDIATE) for k in ("align", "approach")]
+    assert v.verdict == NOT_PROVED and "in-family: no rows" in v.why, v.why
+    rows += [_row("no-collision", "in-family-views", "PROVED", "any")]
     assert _verdicts("repaired", rows)["no-collision"].verdict == PROVED
+    rows[-1] = _row("no-collision", "in-family-views", "VIOLATED", "any")
+    assert _verdicts("repaired", rows)["no-collision"].verdict == NOT_PROVED
 
 
 def test_the_repairs_own_destinations_are_obligations():

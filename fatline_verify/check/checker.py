@@ -21,7 +21,7 @@ import numpy as np
 
 from ..errors import InvalidInput
 from ..lemmas.properties import Lemma, LemmaResult, Verdict
-from ..lemmas.registry import StepLemma, registered
+from ..lemmas.registry import StepLemma, judged
 from ..model.config import Model
 from ..model.lattice import KeyCodec, RankedCodec
 from ..model.numbers import format_number
@@ -453,7 +453,7 @@ def witness_path(directory: Path, prefix: str, lemma: Lemma | StepLemma, robots:
 
 def witness_paths(plan: CheckPlan, directory: Path, prefix: str) -> list[Path]:
     """Every file a check of ``plan`` may write into ``directory`` (checked before the run)."""
-    lemmas: tuple[Lemma | StepLemma, ...] = (*rule_lemmas(plan.model), *registered())
+    lemmas: tuple[Lemma | StepLemma, ...] = (*rule_lemmas(plan.model), *judged(plan.model))
     return [witness_path(directory, prefix, lemma, n) for n in plan.counts for lemma in lemmas]
 
 
@@ -479,7 +479,7 @@ def check_fingerprint(model: Model) -> str:
     from ..cache import fingerprint
     from ..provenance import plugin_settings
 
-    extras = {lemma.name: lemma.version for lemma in registered()}
+    extras = {lemma.name: lemma.version for lemma in judged(model)}
     return fingerprint(
         model, "check", engine=CHECKER_VERSION, **({"lemmas": extras} if extras else {}), **plugin_settings(model)
     )

@@ -17,7 +17,8 @@ from typing import Any
 
 import numpy as np
 
-from ..lemmas.registry import CORE_FLAGS, FLAG_BITS, extra_flags, registered
+from ..lemmas import registry as lemma_registry
+from ..lemmas.registry import CORE_FLAGS, FLAG_BITS, extra_flags
 from ..model.config import Model
 from ..resources import return_freed_memory
 from ..rules.registry import lemma_flags
@@ -163,7 +164,7 @@ class Shard:
         """The keys found since, sorted: together with :attr:`base` (disjoint) the visited set."""
         self.frontier = np.zeros(0, dtype=self.codec.dtype)
         self.frontier_ids = np.zeros(0, dtype=np.int64)
-        self.lemmas = registered()
+        self.lemmas = lemma_registry.judged(self.system.model)
         """Registered step lemmas: judged on every transition, by one numpy pass over its positions."""
         judged, self.prune = lemma_flags(self.system.model)
         self.keep = judged | ~CORE_FLAGS

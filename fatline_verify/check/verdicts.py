@@ -8,7 +8,7 @@ import numpy as np
 
 from ..goals.registry import LINES, missed
 from ..lemmas.properties import SAFETY, Lemma, LemmaResult, StopReason, Verdict
-from ..lemmas.registry import StepLemma, registered
+from ..lemmas.registry import StepLemma, judged
 from ..resources import format_size, machine_memory
 from ..rules.registry import applies as rule_lemmas
 from ..trace.traces import approach_stuck
@@ -69,7 +69,7 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
     """Every lemma's verdict on one explored graph, witnesses replayed."""
     out: dict[Any, LemmaResult] = {}
     expanded = ex.expanded
-    extras = registered()
+    extras = judged(ex.model)
     applies = rule_lemmas(ex.model)  # the rule set's own setting: a lemma it does not claim is not judged
     step: tuple[Lemma | StepLemma, ...] = (*(lemma for lemma in SAFETY if lemma in applies), *extras)
     for lemma in step:

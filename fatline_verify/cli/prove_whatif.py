@@ -32,10 +32,10 @@ def parse_with(text: str) -> frozenset[str]:
 def cmd_prove_whatif(args: argparse.Namespace) -> int:
     """The what-if rows: checked input first (one line, exit 2), then each obligation in turn, the JSON
     rewritten after each (an interrupted run keeps what it finished)."""
-    from ..prove.smt.legs import missing_repairs
     from ..prove.smt.solving import solver_version
     from ..prove.tasks import check_encoded
     from ..prove.whatif import obligations, prove_whatif
+    from ..rules.repaired.family import missing as missing_repairs
 
     kinds = parse_with(args.with_)
     model = model_arg(args.model)

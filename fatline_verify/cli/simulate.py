@@ -11,7 +11,7 @@ from ..outputs import Kind, Output, claim_file, distinct_outputs
 from ..schedulers.activation import scheduler_named
 from ..schedulers.systems import system_for
 from ..text import plural, trace_lines
-from ..trace.simulate import Outcome, parse_schedule, play_schedule, simulate
+from ..trace.simulate import Outcome, parse_schedule, play_schedule, registered_violation, simulate
 from ..trace.traces import run_to_json, write_trace
 from .common import (
     EXIT_FOUND,
@@ -73,7 +73,11 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         run = simulate(initial, model, seed=seed, max_rounds=max_rounds)
         origin = {"tool": "fatline simulate", "scheduler": str(scheduler), "seed": seed}
         lines.append(f"scheduler {scheduler}, seed {seed}, at most {plural(max_rounds, word)}")
-    doc = run_to_json(run, origin)
+    focus = None
+    found = registered_violation(run)  # a registered step lemma (a plug-in's, in-family): the run up to it
+    if found is not None and (run.outcome is not Outcome.VIOLATION or len(found[0].rounds) < len(run.rounds)):
+        run, focus = found
+    doc = run_to_json(run, origin, focus)
     lines += trace_lines(doc)
     if args.schedule is not None and len(run.rounds) < len(rounds):
         rest = len(rounds) - len(run.rounds)
@@ -82,7 +86,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     if trace is not None:
         write_trace(doc, trace)
         emit([f"trace written to {trace}"])
-    return EXIT_FOUND if run.outcome in (Outcome.VIOLATION, Outcome.DEADLOCK) else EXIT_OK
+    return EXIT_FOUND if focus or run.outcome in (Outcome.VIOLATION, Outcome.DEADLOCK) else EXIT_OK
 
 
 def register(sub: Any) -> None:

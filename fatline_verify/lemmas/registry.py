@@ -51,6 +51,9 @@ class StepLemma:
     """Part of the check fingerprint: a changed lemma invalidates the results that judged it."""
     flag: int = 0
     """Its bit in a transition's violation flags (given by :func:`register`)."""
+    applies: Callable[[Any], bool] | None = field(default=None, repr=False, compare=False)
+    """Whether it is judged for a model (``None``: for every model): the lemma ``in-family`` only for a rule
+    set that declares a move family."""
 
     @property
     def value(self) -> str:
@@ -82,7 +85,7 @@ def register(lemma: StepLemma) -> StepLemma:
             f"lemma {lemma.name!r}: the violation flags hold {FLAG_BITS} step lemmas; "
             f"expected at most {FLAG_BITS - CORE_FLAGS.bit_length()} registered ones"
         )
-    placed = StepLemma(lemma.name, lemma.paper, lemma.violators, lemma.batch, lemma.version, 1 << bit)
+    placed = StepLemma(lemma.name, lemma.paper, lemma.violators, lemma.batch, lemma.version, 1 << bit, lemma.applies)
     _REGISTRY[lemma.name] = placed
     from ..rules import registry as rules
 
@@ -96,6 +99,11 @@ def registered() -> tuple[StepLemma, ...]:
 
     rules.names()  # loads the plug-ins, whose modules may register lemmas too
     return tuple(_REGISTRY.values())
+
+
+def judged(model: Any) -> tuple[StepLemma, ...]:
+    """The registered step lemmas judged for ``model`` (each whose :attr:`StepLemma.applies` says so)."""
+    return tuple(lemma for lemma in registered() if lemma.applies is None or lemma.applies(model))
 
 
 def checked() -> tuple[Any, ...]:
@@ -154,4 +162,14 @@ def _exact_steps(before: np.ndarray, after: np.ndarray, unit: int) -> list[tuple
     return [([(exact[x], exact[y]) for x, y in b], [(exact[x], exact[y]) for x, y in a]) for b, a in rows]
 
 
-__all__ = ["CORE_FLAGS", "FLAG_BITS", "StepLemma", "checked", "extra_flags", "find", "register", "registered"]
+__all__ = [
+    "CORE_FLAGS",
+    "FLAG_BITS",
+    "StepLemma",
+    "checked",
+    "extra_flags",
+    "find",
+    "judged",
+    "register",
+    "registered",
+]

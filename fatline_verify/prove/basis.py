@@ -3,7 +3,7 @@ query, never by a list of names.
 
 - **vacuous**: the case's firing condition alone has no solution over the reals: the obligation built
   with ``vacuity=True`` (r, and a second mover, make their decisions, the claim left out;
-  :func:`fatline_verify.prove.smt.claims.build`, :func:`fatline_verify.prove.smt.legs.build`) is unsat.
+  :func:`fatline_verify.prove.smt.claims.build`, :func:`fatline_verify.prove.smt.family.build`) is unsat.
   Asked of every PROVED row, however the search reached its unsat (a case whose blocker would be out of
   view is vacuous even where the full obligation came out unsat first); a row whose search already found
   it ("the case never fires", "these legs never occur together") is not asked again.
@@ -68,7 +68,7 @@ def basis_of(model: Model, task: Any, result: ProofResult, budget: float = BUDGE
     for); ``""`` for any other verdict or a task without a case (the global form)."""
     from .smt.cases import Arith
     from .smt.claims import Spec
-    from .smt.legs import LegSpec
+    from .smt.family import FamilySpec
 
     if result.verdict is not Verdict.PROVED:
         return ""
@@ -77,11 +77,14 @@ def basis_of(model: Model, task: Any, result: ProofResult, budget: float = BUDGE
 
         def build(**kw: bool) -> Any:
             return build_spec(Arith(None), model, task, **kw)
-    elif isinstance(task, LegSpec):
-        from .smt.legs import build as build_leg
+    elif isinstance(task, FamilySpec):
+        from ..rules import registry
+        from .smt.family import build as build_family
+
+        family = registry.family(model)
 
         def build(**kw: bool) -> Any:
-            return build_leg(Arith(None), model, task, **kw)
+            return build_family(Arith(None), model, family, task, **kw)
     else:
         return ""
     if any(word in result.reason for word in FOUND_VACUOUS):

@@ -15,7 +15,7 @@ A lemma is
 - **NOT ENCODED** when a part has no obligation form at all (approach: "each robot will move closer
   to RMA in finite time" is liveness; the prover's ``x-nondecreasing`` is a step fact beside it).
 
-The table is a few constructors (:func:`paper_lemma`, :func:`legs_lemma`) over the rules' encodings,
+The table is a few constructors (:func:`paper_lemma`, :func:`family_lemma`) over the rules' encodings,
 one entry per lemma and encoding; a liveness lemma joins as an entry whose parts name its forms
 (progress: ``enabled``; termination: ``measure`` and ``enabled``, resting on safety, rigid moves and
 a fair round scheduler); until the prover writes rows of those forms it is NOT ENCODED.
@@ -34,7 +34,8 @@ from ..model.options import Scheduler
 from ..rules import registry
 from .basis import counts_text
 from .goals import goal_problem
-from .rests import LEGS_FACTS, Fact, rests_on
+from .rests import Fact, rests_on
+from .tasks import VIEWS_FORM
 
 PROVED, VIOLATED, NOT_PROVED, NOT_ENCODED = "PROVED", "VIOLATED", "NOT PROVED", "NOT ENCODED"
 LEMMA_VERDICTS = (VIOLATED, NOT_ENCODED, NOT_PROVED, PROVED)
@@ -105,20 +106,50 @@ def _repairs(model: Model, *, vertical: bool = True) -> tuple[str, ...]:
     return tuple(out)
 
 
-RIGHTWARD = Part(
-    "rightward",
-    ("x-nondecreasing",),
-    "a horizontal leg goes right: no destination decreases x (x-nondecreasing per case, the paper's and the "
-    "repairs' repair-align and repair-approach)",
-    lemma=str(Lemma.APPROACH),
-    cases=lambda model: _repairs(model, vertical=False),
+IN_FAMILY = Part(
+    "in-family",
+    (VIEWS_FORM,),
+    "every decision of the rule set's decide, on every view of the lattice, is one its move family admits",
+    refutes=False,
 )
+"""What ties a family's obligations to the rule set (the checker's ``in-family`` lemma holds each run to it too)."""
+
+FAMILY_PARTS = {
+    Lemma.NO_COLLISION: (
+        (Part("leg", ("leg",), "r's leg against a robot at rest or on any leg: never within 2", refutes=True),),
+        "every collision is between a mover and another robot, at rest or moving by a leg of the family",
+    ),
+    Lemma.CONNECTIVITY: (
+        (
+            Part("kept", ("kept",), "an edge both movers' tests kept without a witness stays an edge"),
+            Part(
+                "bridged",
+                ("bridged",),
+                "an edge a mover's test passed through a witness is a path of two edges",
+                needed=lambda model: _witnesses(model),
+            ),
+        ),
+        "every edge before the round is a path of at most two edges after it",
+    ),
+}
 
 
-def legs_lemma(lemma: Lemma | str, parts: tuple[Part, ...], argument: str) -> Entry:
-    """A lemma of the repaired rule set over its legs, every leg class against rest and every other class;
-    the legs' rightward horizontal is a part of it (:data:`RIGHTWARD`)."""
-    return Entry(str(lemma), "legs", (*parts, RIGHTWARD), argument)
+def _witnesses(model: Model) -> str:
+    """``""`` when the model's family names a witness in a guard (a bridged edge), else why no bridged row is needed."""
+    from ..rules import registry
+    from ..rules.family.lang import roles
+
+    family = registry.family(model)
+    if family is None or any(roles(c.guard) for c in family.classes):
+        return ""
+    return "no guard of the family names a witness, so every edge is kept"
+
+
+def family_lemma(lemma: Lemma, encoding: str) -> Entry:
+    """A lemma over a move family's obligations (:mod:`fatline_verify.prove.smt.family`), every leg class
+    against rest and every other class, with the row that holds ``decide`` to the family (:data:`IN_FAMILY`)."""
+    parts, argument = FAMILY_PARTS[lemma]
+    return Entry(str(lemma), encoding, (*parts, IN_FAMILY), argument)
 
 
 ONE_COLLIDE = Part("one-mover", ("one-mover",), "r's move never comes within 2 of a robot at rest", refutes=True)
@@ -153,29 +184,8 @@ TABLE: tuple[Entry, ...] = (
         "no robot moves beyond the RMA (seen) and none on it leaves it (on-rma), so the RMA stays",
     ),
     paper_lemma(Lemma.APPROACH, (X_STEP, REACHES), "liveness: needs a measure, not a step fact"),
-    legs_lemma(
-        Lemma.NO_COLLISION,
-        (
-            Part(
-                "leg",
-                ("leg",),
-                "r's leg against a robot at rest or on any leg: never within 2",
-                refutes=True,
-                facts=LEGS_FACTS[:1],
-            ),
-        ),
-        "every collision is between a mover and another robot, at rest or moving by a leg",
-    ),
-    legs_lemma(
-        Lemma.CONNECTIVITY,
-        (
-            Part("kept", ("kept",), "an edge both movers' tests kept stays an edge", facts=LEGS_FACTS[:1]),
-            Part(
-                "bridged", ("bridged",), "an edge a mover's test bridged is a path of two edges after", facts=LEGS_FACTS
-            ),
-        ),
-        "every edge before the round is a path of at most two edges after it",
-    ),
+    *(family_lemma(Lemma.NO_COLLISION, encoding) for encoding in ("legs", "family")),
+    *(family_lemma(Lemma.CONNECTIVITY, encoding) for encoding in ("legs", "family")),
     Entry(
         str(Lemma.RMA_FIXED),
         "legs",
@@ -537,8 +547,8 @@ __all__ = [
     "Entry",
     "LemmaVerdict",
     "Part",
+    "family_lemma",
     "judge",
-    "legs_lemma",
     "lemma_verdicts",
     "live_verdicts",
     "liveness_verdicts",

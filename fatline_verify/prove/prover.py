@@ -10,7 +10,7 @@ header. Each obligation runs in a fresh process (:mod:`fatline_verify.fresh`). T
 - :mod:`fatline_verify.prove.search`: one decision case decided, in rounds of growing budget
   (vacuity, lattices, the reals);
 - :mod:`fatline_verify.prove.replay`: every answer replayed by the executable model;
-- :mod:`fatline_verify.prove.legs`: the repaired rule set's leg obligations;
+- :mod:`fatline_verify.prove.family`: a move family's obligations (the repaired rule set's legs among them);
 - here: the global form of Lemma 1 (the whole graph; no witness argument, a bounded slot encoding:
   :func:`prove_global`), and :func:`prove`, which runs them all.
 """
@@ -40,7 +40,7 @@ from .smt import obligations as ob
 from .smt.claims import (
     Spec,
 )
-from .smt.legs import LegSpec
+from .smt.family import FamilySpec
 from .smt.liveness import LiveSpec
 from .tasks import (
     DEFAULT_SLOTS,
@@ -53,6 +53,7 @@ from .tasks import (
     NotEncodedModel,
     ProofResult,
     Task,
+    ViewsSpec,
     check_encoded,
     paper_part,
     row_key,
@@ -201,16 +202,16 @@ def prove(
         return []
     check_encoded(model)
     from .basis import decided
-    from .legs import prove_leg
+    from .family import prove_family, prove_views
     from .live import prove_live
 
-    covers = [k for k, task in enumerate(tasks) if isinstance(task, CoverageSpec)]
+    covers = [k for k, task in enumerate(tasks) if isinstance(task, CoverageSpec | ViewsSpec)]
     solved = [k for k in range(len(tasks)) if k not in covers]
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
     calls: list[tuple[Callable[..., ProofResult], tuple[Any, ...], dict[str, Any]]] = []
     for task in (tasks[k] for k in solved):
-        if isinstance(task, LegSpec):
-            calls.append((decided, (prove_leg, model, task), {"timeout": timeout, "out": out}))
+        if isinstance(task, FamilySpec):
+            calls.append((decided, (prove_family, model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, LiveSpec):
             calls.append((prove_live, (model, task), {"timeout": timeout, "out": out, "given": tuple(deadlocks)}))
         elif isinstance(task, Spec):
@@ -250,8 +251,12 @@ def prove(
     for k in covers:  # no solver budget: every view is read once (the views' own processes share the cores)
         from .refine import prove_coverage
 
-        views = tasks[k].views  # type: ignore[union-attr]
+        task = tasks[k]
         start(k)
+        if isinstance(task, ViewsSpec):
+            done(k, prove_views(model, task, sample=task.sample))
+            continue
+        views = task.views
         exhaustive = views is None
         done(k, prove_coverage(model, exhaustive=exhaustive, sample=views or 0, processes=workers))
     return [r for r in results if r is not None]
@@ -277,7 +282,7 @@ def overrun_result(task: Task, seconds: float, timeout: float, out: Path | None)
     path = (out / lemma / name).as_posix() if out is not None else ""
     if isinstance(task, GlobalTask):
         return ProofResult(task.lemma, task.form, "any", Verdict.INCONCLUSIVE, 0, False, seconds, reason, path)
-    if isinstance(task, LegSpec | LiveSpec | CoverageSpec):
+    if isinstance(task, FamilySpec | LiveSpec | CoverageSpec | ViewsSpec):
         rule, case, other = "any", task.name, task.other
     else:
         rule, case, other = task.mine[0].rule.value, task.name, task.other_name

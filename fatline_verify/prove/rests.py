@@ -25,24 +25,6 @@ class Fact:
     checked: str
 
 
-LEGS_FACTS = (
-    Fact(
-        "legs",
-        "every move of the repaired rules is one leg (horizontal right, top, bottom) that repairs.allowed passed, "
-        "whatever rule chose it",
-        "by test on the repaired rules' own decide: random swarms (tests/test_legs.py), 1,500 random views of the "
-        "lattice q = 1 (tests/test_facts.py), every view at q = 1 in the slow tier (fatline_verify/prove/facts.py)",
-    ),
-    Fact(
-        "lock",
-        "a robot that sees a robot strictly left of it stays (so the bridge robot b of a bridged edge is at rest)",
-        "by test on the repaired rules' own decide: random swarms (tests/test_legs.py), 1,500 random views of the "
-        "lattice q = 1 (tests/test_facts.py), every view at q = 1 in the slow tier (fatline_verify/prove/facts.py)",
-    ),
-)
-"""What the repaired rules' leg obligations rest on beside their rows (:mod:`fatline_verify.prove.smt.legs`)."""
-
-
 _LATTICE = re.compile(r"lattice q=(\d+)")
 
 
@@ -92,4 +74,4 @@ def _form_counts(rows: Sequence[dict[str, Any]]) -> dict[str, int]:
     return out
 
 
-__all__ = ["LEGS_FACTS", "Fact", "lattices", "rests_on", "solver"]
+__all__ = ["Fact", "lattices", "rests_on", "solver"]

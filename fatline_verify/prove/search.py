@@ -133,7 +133,7 @@ def rounds_text(timeout: float) -> str:
 
 class Budget:
     """An obligation's solver budget, spent by every check it makes (the per-case search of
-    :func:`prove_spec`, the leg obligations of :mod:`fatline_verify.prove.legs`)."""
+    :func:`prove_spec`, the leg obligations of :mod:`fatline_verify.prove.family`)."""
 
     def __init__(self, timeout: float) -> None:
         self.timeout = timeout

@@ -1,7 +1,8 @@
 """Which obligations ``fatline prove`` has for a model (:func:`tasks_for`), what a result is
 (:class:`ProofResult`), and which models it refuses (:func:`check_encoded`): a decision case of the
-paper's rules (:class:`~fatline_verify.prove.smt.claims.Spec`), Lemma 1's global form, or a repaired rule
-set's leg (:class:`~fatline_verify.prove.smt.legs.LegSpec`)."""
+paper's rules (:class:`~fatline_verify.prove.smt.claims.Spec`), Lemma 1's global form, or a move family's
+obligation (:class:`~fatline_verify.prove.smt.family.FamilySpec`: the repaired rule set's legs, or any rule
+set's declared family)."""
 
 from __future__ import annotations
 
@@ -28,7 +29,7 @@ from .smt.claims import (
     X_NONDECREASING,
     Spec,
 )
-from .smt.legs import LegSpec, leg_specs, missing_repairs
+from .smt.family import FamilySpec, specs
 from .smt.live_rules import live_cases
 from .smt.liveness import LiveSpec, live_specs
 
@@ -44,7 +45,7 @@ def encoding_name(model: Model) -> str | None:
     it is), proved by the paper's case table."""
     encoding = registry.encoding_of(registry.of(model), model)
     if encoding is None:
-        return None
+        return "family" if registry.family(model) is not None else None
     return "paper" if encoding.name == "legs" and not model.options.repaired else encoding.name
 
 
@@ -143,9 +144,33 @@ class CoverageSpec:
         return f"{self.lemma}/{self.form}-{self.case}"
 
 
-Task = Spec | GlobalTask | LegSpec | LiveSpec | CoverageSpec
-"""An obligation: a decision case of the paper's rules, the global form, a repaired rule set's leg,
-a liveness obligation, or the liveness cases' coverage of ``decide``."""
+VIEWS_FORM = "in-family-views"
+"""The form of the rows that hold ``decide`` to its move family on views."""
+
+
+@dataclass(frozen=True, slots=True)
+class ViewsSpec:
+    """The row ``LEMMA/in-family-views-any`` (:func:`fatline_verify.prove.family.prove_views`): ``decide`` on
+    every view of the model's lattice makes a decision its move family admits; without it, the family's
+    obligations say nothing of the rule set."""
+
+    lemma: Lemma
+    form: str = VIEWS_FORM
+    name: str = "any"
+    other: str = ""
+    sample: int | None = None
+    """``None``: every view of the lattice when it has at most a few million (PROVED possible); else a random
+    sample of that many (INCONCLUSIVE at best: ``fatline prove --views N``)."""
+
+    @property
+    def key(self) -> str:
+        return f"{self.lemma}/{self.form}-any"
+
+
+Task = Spec | GlobalTask | FamilySpec | LiveSpec | CoverageSpec | ViewsSpec
+"""An obligation: a decision case of the paper's rules, the global form, a move family's obligation (the
+repaired rule set's legs among them), a liveness obligation, the liveness cases' coverage of ``decide``,
+or a family held to ``decide`` on views."""
 
 
 def rule_groups(cases: Sequence[Case]) -> list[tuple[str, tuple[Case, ...]]]:
@@ -180,6 +205,8 @@ def check_encoded(model: Model) -> None:
             f"Use fatline check {model.ref} for this scheduler"
         )
     if encoding_name(model) == "legs":
+        from ..rules.repaired.family import missing as missing_repairs
+
         missing = missing_repairs(model)
         if missing:
             raise NotEncodedModel(
@@ -233,6 +260,8 @@ def tasks_for(model: Model, lemmas: tuple[Lemma, ...] = LEMMAS, *, two_movers: b
         return live
     if encoding == "legs":
         return _repaired_tasks(model, lemmas) + live
+    if encoding == "family":
+        return family_tasks(model, lemmas) + live
     scheduler = model.options.scheduler
     moving = moving_cases(model)
     stays = tuple(staying_cases(model)) if scheduler is Scheduler.FSYNC else ()
@@ -281,14 +310,15 @@ def _live_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
 
 def _repaired_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
     """A repaired model's obligations: the leg obligations of the collision and connectivity lemmas
-    (:mod:`fatline_verify.prove.smt.legs`), and the per-case claims ``seen`` and ``x-nondecreasing`` of the
+    (:mod:`fatline_verify.rules.repaired.family`,
+    :mod:`fatline_verify.prove.smt.family`), and the per-case claims ``seen`` and ``x-nondecreasing`` of the
     paper's rules under its readings (:func:`paper_part`; the legs' rightward horizontal rests on
     the latter)."""
     moving = moving_cases(paper_part(model))
     repairs = repair_cases(model)
     tasks: list[Task] = []
+    tasks += family_tasks(model, lemmas)
     for lemma in lemmas:
-        tasks += leg_specs((lemma,))
         if lemma is Lemma.RMA_FIXED:
             tasks += [Spec.of(lemma, SEEN, c) for c in moving]
             tasks += [Spec.of(lemma, ON_RMA, c) for c in moving]
@@ -296,6 +326,17 @@ def _repaired_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
         if lemma is Lemma.APPROACH:
             tasks += [Spec.of(lemma, X_NONDECREASING, c) for c in moving]
             tasks += [Spec(lemma, X_NONDECREASING, (c,), repair=k) for k, c in repairs if k != "contract"]
+    return tasks
+
+
+def family_tasks(model: Model, lemmas: tuple[Lemma, ...]) -> list[Task]:
+    """A move family's obligations (:mod:`fatline_verify.prove.smt.family`) for the lemmas of ``lemmas`` it
+    speaks of (no-collision, connectivity), each lemma's with the row that holds ``decide`` to the family."""
+    family = registry.family(model)
+    tasks: list[Task] = []
+    for lemma in lemmas:
+        got = specs(family, (lemma,))
+        tasks += [*got, ViewsSpec(lemma)] if got else []
     return tasks
 
 

@@ -4,7 +4,7 @@ The checker judges one rule set: from each initial configuration, every activati
 decisions. When liveness fails there, two different things may be wrong: the rules chose badly
 (another rule set could do better), or the safety mechanism itself leaves no way to the line. This
 module tells them apart. The **family** is the moves of the classes the repaired rule set's safety
-proof covers (:mod:`fatline_verify.prove.smt.legs`), on the lattice and never across the RMA (Lemma 3): a
+proof covers (:mod:`fatline_verify.rules.repaired.family`), on the lattice and never across the RMA (Lemma 3): a
 robot that sees no robot strictly left of it (``repair_lock``)
 makes one leg of a proved class that :func:`fatline_verify.rules.repaired.algorithm.allowed` passes (clear of every
 robot it sees, every edge kept or bridged), ``k`` lattice units long, ``1 <= k <= q`` (one radius
@@ -567,8 +567,8 @@ def refuse(model: Model) -> None:
     """Bad input, before any work: a model without the repairs the family's legs are proved under, one
     ``fatline prove`` refuses (ASYNC, corner legs), or another goal than one vertical."""
     from ..errors import InvalidInput
-    from ..prove.smt.legs import missing_repairs
     from ..prove.tasks import check_encoded
+    from ..rules.repaired.family import missing as missing_repairs
 
     missing = missing_repairs(model)
     if missing:

@@ -22,7 +22,7 @@ def _point_list(model: Model, state: State) -> list[list[str]]:
 
 def _kinds_text(kinds: frozenset[Kind], model: Model) -> str:
     proved = ", ".join(k.value for k in Kind if k in PROVED)
-    text = f"{proved} (the classes fatline prove proves safe: fatline_verify/prove/smt/legs.py)"
+    text = f"{proved} (the classes fatline prove proves safe: fatline_verify/rules/repaired/family.py)"
     return text + what_if_text(kinds, model)
 
 

@@ -39,12 +39,13 @@ GROUP = "fatline.plugins"
 """The entry-point group a plug-in package declares."""
 
 BUILTIN = (
+    "fatline_verify.rules.family.enforce",
     "fatline_verify.rules.paper.rule_set",
     "fatline_verify.rules.repaired.rule_set",
     "fatline_verify.rules.certified.rule_set",
     "fatline_verify.rules.table.rule_set",
 )
-"""The modules that register this package's own rule sets."""
+"""The modules that register this package's own rule sets (and the lemma that holds a rule set to its family)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -218,6 +219,12 @@ class RuleSet:
                     f"some of {', '.join(sorted(step)) or 'none'}"
                 )
 
+    family: Any = field(default=None, repr=False, compare=False)
+    """Its move family (:class:`fatline_verify.rules.family.MoveFamily`, or a function of the model giving one
+    or ``None``): every decision is held to it as the rule set runs (the step lemma ``in-family``), and
+    ``fatline prove`` proves no-collision and connectivity from it for every swarm size, whatever the policy
+    of ``decide`` (:mod:`fatline_verify.prove.smt.family`). ``None``: no family."""
+
     parameters: dict[str, Param] = field(default_factory=dict, repr=False, compare=False)
     """Parameters of its own (:mod:`fatline_verify.model.seams`), set in a model file's ``[rules]``
     table; its decision function reads their values as ``model.setting("rules")``."""
@@ -356,6 +363,18 @@ def applies(model: Model) -> tuple[Lemma, ...]:
     return of(model).applies()
 
 
+def family(model: Model) -> Any:
+    """The move family of ``model``'s rule set under ``model`` (``None``: it declares none, or not for
+    these options); a declaration that is not a family is refused in one line."""
+    from .family.family import family_of
+
+    rule_set = of(model)
+    try:
+        return family_of(rule_set.family, model)
+    except TypeError as exc:
+        raise InvalidModel(f"rules={rule_set.name!r}: family: {exc}") from None
+
+
 def decider(model: Model) -> Decide:
     """The decision function of ``model``, looked up once (engines call it per snapshot)."""
     return model.algorithm or of(model).decide
@@ -376,6 +395,7 @@ __all__ = [
     "decide",
     "decider",
     "encoding_of",
+    "family",
     "get",
     "lemma_flags",
     "load_plugins",

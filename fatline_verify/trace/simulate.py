@@ -114,6 +114,24 @@ def simulate(
     return Run(model, initial, tuple(steps), outcome)
 
 
+def registered_violation(run: Run) -> tuple[Run, str] | None:
+    """The run up to its first step that breaks a registered step lemma judged for its model (a plug-in's,
+    or ``in-family``), with that lemma's name; ``None`` when no step does. The run's own outcome is kept
+    for the shortened run (a registered lemma never stops a run of the model: a trace names it instead)."""
+    from ..lemmas.registry import judged
+
+    lemmas = judged(run.model)
+    if not lemmas:
+        return None
+    system = system_for(run.model)
+    for k, step in enumerate(run.rounds, start=1):
+        for lemma in lemmas:
+            if lemma.violators(step.before, step.after, run.model):
+                outcome = outcome_after(step.target, step, run.model, system) or Outcome.ROUND_LIMIT
+                return Run(run.model, run.initial, run.rounds[:k], outcome), lemma.name
+    return None
+
+
 # --- explicit schedules -------------------------------------------------------------------------------
 
 

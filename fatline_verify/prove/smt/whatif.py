@@ -18,7 +18,7 @@ two kinds of leg that no shipped obligation covers (:data:`fatline_verify.repair
 
 Each mover's leg passed ``repairs.allowed`` for every robot it sees: not strictly left of it, clear of
 its swept disc, its class's condition on its vertical, and the edge kept or bridged (the same tests as
-:mod:`fatline_verify.prove.smt.legs`). These obligations are those of :mod:`~fatline_verify.prove.smt.legs`
+:mod:`fatline_verify.prove.smt.family`). These obligations are those of :mod:`~fatline_verify.prove.smt.family`
 (``no-collision/leg``, ``connectivity/kept``, ``connectivity/bridged``) over the extended set of
 classes, every pair in which at least one robot is on a what-if class or, with ``corner`` (whose
 edge tests differ), every pair. Two differences from the shipped forms, both still covering every
@@ -29,7 +29,7 @@ the round or r-b and b-o are (a path of at most two edges either way).
 They are decided **on the lattice** of the model (``x = X / q``, integers, exact), where the family
 of ``reach`` lives: a corner leg is sqrt(2) radii long, which the reals' nonlinear arithmetic does
 not decide in time, while on the lattice every quantity is an integer. ``unsat`` covers every swarm
-size on that lattice by the argument of :mod:`fatline_verify.prove.smt.legs` (the conditions are
+size on that lattice by the argument of :mod:`fatline_verify.prove.smt.family` (the conditions are
 universal over the robots a mover sees; every collision and every edge with a mover at one end is
 an instance of one obligation). ``repairs._edge_kept`` passes an edge it does not keep through a
 robot right of the mover (at rest: the lock holds it), or, under ``corner``, through a robot on the
@@ -127,7 +127,7 @@ class WhatIfSpec:
 def whatif_specs(
     kinds: frozenset[str], q: int, lemmas: tuple[Lemma, ...], reach: int | None = None
 ) -> list[WhatIfSpec]:
-    """Every obligation of the family with ``kinds``: as :func:`fatline_verify.prove.smt.legs.leg_specs`
+    """Every obligation of the family with ``kinds``: as :func:`fatline_verify.prove.smt.family.specs`
     over :func:`classes`, keeping only pairs with a what-if class unless ``corner`` (whose edge tests
     differ from the shipped ones) is among the kinds. ``reach``: the longest ``left-alone`` leg
     (lattice units; ``None``: one radius)."""
@@ -457,7 +457,7 @@ def argument(model: Model, spec: WhatIfSpec, built: Built) -> str:
         "pairwise disjoint discs, within a box that excludes no violation.",
         "Why unsat covers swarms of every size on this lattice: the conditions asserted are universal over the "
         "robots a mover sees, and every collision, and every edge with a mover at one end, is an instance of one "
-        "obligation (fatline_verify/prove/smt/legs.py): bridged when some mover's test for the other failed kept "
+        "obligation (fatline_verify/prove/smt/family.py): bridged when some mover's test for the other failed kept "
         "(that mover is r), through a robot right of it (bridged) or, under corner, on its vertical "
         "(bridged-vertical, that robot's leg named), kept otherwise; each edge before the round is then a path of "
         "at most two edges after.",

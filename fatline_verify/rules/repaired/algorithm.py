@@ -44,7 +44,7 @@ The repairs and the counterexample class each one removes:
   most to the greatest x r sees), then along its vertical toward the nearest height, reachable by
   allowed legs, from which that step would pass, then the leg toward its destination, the top's
   contraction, one radius up, then down. Every move it makes passes :func:`allowed` and is a leg of
-  :class:`Leg`: the leg obligations (:mod:`fatline_verify.prove.smt.legs`) cover it unchanged. What it
+  :class:`Leg`: the leg obligations (:mod:`fatline_verify.rules.repaired.family`) cover it unchanged. What it
   cannot remove: configurations where no robot has any such leg (the square ``(0, 0) (0, 4) (4, 0)
   (4, 4)`` of side ``rad_v``; at ``q = 2`` three robots, ``(0, 3/2)`` between ``(3/2, 0)`` and
   ``(3/2, 3)``).
@@ -96,7 +96,7 @@ SCENARIO_4 = (Rule.SCENARIO_4_I_EMPTY, Rule.SCENARIO_4_I_NONEMPTY)
 
 class Leg(StrEnum):
     """The class of a repaired move (``repair_step = unit``), whatever rule chose it: what
-    ``fatline prove`` reasons about for the repaired rule set (:mod:`fatline_verify.prove.smt.legs`)."""
+    ``fatline prove`` reasons about for the repaired rule set (:mod:`fatline_verify.rules.repaired.family`)."""
 
     HORIZONTAL = "horizontal"
     """One radius or less along the x axis."""

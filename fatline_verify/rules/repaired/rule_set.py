@@ -9,6 +9,7 @@ from ..paper.algorithm import paper_decide
 from ..paper.rule_set import READINGS
 from ..registry import Encoding, RuleSet, register, register_encoding
 from .algorithm import repair
+from .family import family
 
 REPAIRS = frozenset(name for name, spec in CATALOGUE.items() if spec.repair)
 """The repair options."""
@@ -21,7 +22,7 @@ def decide(snapshot: Sequence[Any], model: Any) -> Decision:
 
 LEGS = register_encoding(Encoding("legs", "the repaired rules' legs", decide))
 """The prover's encoding of the repaired rules: each leg class against rest and every other class
-(:mod:`fatline_verify.prove.smt.legs`); with every repair off the rules decide as the paper's, and the
+(:mod:`.family`, :mod:`fatline_verify.prove.smt.family`); with every repair off the rules decide as the paper's, and the
 paper's case table is used (:func:`fatline_verify.prove.coverage.encoding_name`)."""
 
 REPAIRED = register(
@@ -32,5 +33,6 @@ REPAIRED = register(
         options=READINGS | REPAIRS,
         prover=LEGS,
         bands=True,
+        family=family,
     )
 )

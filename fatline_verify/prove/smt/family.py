@@ -1,0 +1,418 @@
+"""The guard language's symbolic interpreter, and the safety obligations any move family gives.
+
+A rule set that declares a :class:`~fatline_verify.rules.family.family.MoveFamily` is proved safe from
+the family alone, whatever its policy (the checker holds every decision to the family:
+:mod:`fatline_verify.rules.family.enforce`). An obligation names a few robots (r at the origin, moving
+by one leg class; o, at rest or moving by a class; for a bridged edge, a witness b, at rest or moving),
+asserts each mover's family conditions **for every named robot**, and asks for a violation.
+
+**The symbolic interpreter** (:func:`assumed`) turns a condition about what a mover sees into a z3 term
+that the condition *implies* for the named robots, in any swarm they are part of:
+
+- ``forall c seen: P(c)`` becomes ``P(u)`` for each named robot ``u`` the mover sees (a universal fact
+  holds for the named ones); under a negation (needing a term that *implies* the condition) it becomes
+  false;
+- ``exists b seen: P(b)`` becomes true (nothing is known of which robot it is), or, under a negation,
+  ``P(u)`` for some named ``u`` — except where an obligation **names its witness**: inside the instance
+  of r's guard for the robot ``o``, the existential of role ``R`` is either false (the *kept* form: r's
+  test for o passed without it) or ``P(b)`` for the named robot b (the *bridged* form).
+
+**The obligations** (:func:`specs`), for every class of r and every class (or rest) of the others:
+
+- ``no-collision/leg``: r and o come within 2 during the round;
+- ``connectivity/kept``: r sees o before, each mover's test for the other passed without a witness, and
+  r and o do not see each other after;
+- ``connectivity/bridged``: r sees o before, r's test for o passed through the witness b of role ``R``,
+  and neither r-o nor both r-b and b-o are edges after.
+
+**Why unsat covers swarms of every size** (each obligation's header says so): every condition asserted is
+one the real guards imply for the named robots, in any swarm. A collision in a round is between a mover
+and another robot, at rest or moving: some ``leg`` obligation names the two (unseen robots included: a
+condition on a robot applies only if the mover sees it, so the shapes alone must keep far robots apart).
+An edge r-o before the round with a mover r at one end: if some mover's test for the other passed only
+through a witness, name that mover r and the witness b: a ``bridged`` obligation covers it, and r-o is a
+path of at most two edges after; otherwise each mover's test passed without a witness: the ``kept``
+obligation covers it. So every edge before the round is a path of at most two edges after it, and a
+connected swarm stays connected.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import z3
+
+from ...lemmas.properties import Lemma
+from ...model.config import Model
+from ...model.options import Timing
+from ...rules.family.family import REST, MoveFamily
+from ...rules.family.lang import (
+    And,
+    Clear,
+    Cmp,
+    Cond,
+    Const,
+    Distinct,
+    Exists,
+    Forall,
+    Not,
+    Num,
+    Or,
+    Sees,
+    roles,
+)
+from ...rules.family.lang import Pt as LPt
+from .cases import Arith, Pt, apart, d2, sees
+from .claims import Built, capsules_close, segment_close
+
+LEG, KEPT, BRIDGED = "leg", "kept", "bridged"
+FORMS = {Lemma.NO_COLLISION: (LEG,), Lemma.CONNECTIVITY: (KEPT, BRIDGED)}
+CLAIM = {
+    (Lemma.NO_COLLISION, LEG): "r and the other robot o never come within distance 2 during the round",
+    (Lemma.CONNECTIVITY, KEPT): "r and o, within view before the round, are within view after it",
+    (Lemma.CONNECTIVITY, BRIDGED): "r-o is an edge after the round, or r-b and b-o are",
+}
+
+Witnessed = Mapping[tuple[str, str], str | None]
+"""For one mover: ``(role, o) -> b`` names the witness of role ``role`` inside its guard's instance for the
+named robot ``o`` (``None``: the existential is false there)."""
+
+
+# --- the symbolic interpreter -------------------------------------------------------------------
+
+
+@dataclass
+class Scene:
+    """The named robots of an obligation and what the interpreter needs."""
+
+    ar: Arith
+    model: Model
+    at: dict[str, Pt]
+    """Each named robot's centre before the round."""
+    ends: dict[str, Pt] = field(default_factory=dict)
+
+
+def _pt(p: LPt, env: Mapping[str, Pt], ar: Arith) -> Pt:
+    x, y = env[p.name]
+    if p.offset[0] or p.offset[1]:
+        return (x + ar.num(p.offset[0]), y + ar.num(p.offset[1]))
+    return (x, y)
+
+
+def _scalar(ar: Arith, k: Fraction) -> z3.ArithRef:
+    """A dimensionless coefficient (not a length): an integer on a lattice, a rational over the reals."""
+    if ar.lattice:
+        if k.denominator != 1:
+            raise ValueError(f"coefficient {k} is not an integer: the lattice domain multiplies by integers only")
+        return z3.IntVal(int(k), ar.ctx)
+    return z3.RealVal(f"{k.numerator}/{k.denominator}", ar.ctx)
+
+
+def _num(n: Num, env: Mapping[str, Pt], ar: Arith) -> z3.ArithRef:
+    total = ar.num(n.const)
+    for name, axis, k in n.terms:
+        coord = env[name][axis]
+        total = total + (coord if k == 1 else coord * _scalar(ar, k))
+    return total
+
+
+def _close(ar: Arith, model: Model, a0: Pt, a1: Pt, b0: Pt, b1: Pt, same_a: bool, same_b: bool) -> z3.BoolRef:
+    if same_b:
+        return segment_close(ar, model, b0, a0, a1)
+    if same_a:
+        return segment_close(ar, model, a0, b0, b1)
+    return capsules_close(ar, model, (a0, a1), (b0, b1))
+
+
+def assumed(
+    c: Cond,
+    scene: Scene,
+    mover: str,
+    env: dict[str, Pt],
+    *,
+    positive: bool = True,
+    witnessed: Witnessed | None = None,
+    bound: tuple[str, ...] = (),
+    unkept: tuple[str, ...] = (),
+    exact: bool = False,
+) -> z3.BoolRef:
+    """A z3 term for condition ``c`` of the robot ``mover`` (its ``me`` and ``end`` in ``env``) over the
+    named robots of ``scene``: implied by ``c`` (``positive``) or implying it (under a negation); see the
+    module docstring. ``bound``: the named robots the enclosing ``forall`` s are instantiated at.
+    ``exact``: the named robots are every robot the mover sees (a ground view): each quantifier becomes the
+    conjunction or disjunction of its instances, and the term is equivalent to ``c``, whatever the polarity
+    (what the tests compare with the concrete interpreter)."""
+    ar, model = scene.ar, scene.model
+
+    def rec(sub: Cond, pos: bool = positive, env2: dict[str, Pt] = env, b2: tuple[str, ...] = bound) -> z3.BoolRef:
+        return assumed(
+            sub,
+            scene,
+            mover,
+            env2,
+            positive=pos,
+            witnessed=witnessed,
+            bound=b2,
+            unkept=unkept if b2 == bound else (),
+            exact=exact,
+        )
+
+    others = [u for u in scene.at if u != mover]
+    me = env["me"]
+    match c:
+        case Const(value=v):
+            return ar.true() if v else ar.false()
+        case Cmp(op=op, expr=e):
+            v = _num(e, env, ar)
+            zero = ar.num(0)
+            return {"<": v < zero, "<=": v <= zero, ">": v > zero, ">=": v >= zero, "==": v == zero, "!=": v != zero}[
+                op
+            ]
+        case Sees(a=a, b=b):
+            return sees(ar, model, _pt(a, env, ar), _pt(b, env, ar))
+        case Clear(a0=a0, a1=a1, b0=b0, b1=b1):
+            same_a = a0.name == a1.name and a0.offset == a1.offset
+            same_b = b0.name == b1.name and b0.offset == b1.offset
+            pts = [_pt(p, env, ar) for p in (a0, a1, b0, b1)]
+            return z3.Not(_close(ar, model, *pts, same_a, same_b))
+        case Distinct(a=a, b=b):
+            pa, pb = _pt(a, env, ar), _pt(b, env, ar)
+            return z3.Or(pa[0] != pb[0], pa[1] != pb[1])
+        case And(parts=ps):
+            return ar.all([rec(p) for p in ps])
+        case Or(parts=ps):
+            return ar.any([rec(p) for p in ps])
+        case Not(part=p):
+            return z3.Not(rec(p, not positive))
+        case Forall(var=v, body=body):
+            if not positive and not exact:
+                return ar.false()
+            terms = []
+            for u in others:
+                inner = {**env, v: scene.at[u]}
+                term = rec(body, True, inner, (*bound, u))
+                if u in unkept:  # the test for u passed, but not without its witness
+                    bare = {key: None for key in witnessed or {} if key[1] == u}
+                    term = z3.And(
+                        term,
+                        z3.Not(assumed(body, scene, mover, inner, positive=False, witnessed=bare, bound=(*bound, u))),
+                    )
+                terms.append(z3.Implies(sees(ar, model, me, scene.at[u]), term))
+            return ar.all(terms)
+        case Exists(var=v, body=body, role=role):
+            key = (role, bound[-1]) if bound else (role, "")
+            if witnessed is not None and key in witnessed:  # a substitution, whatever the polarity
+                w = witnessed[key]
+                if w is None:
+                    return ar.false()
+                return z3.And(sees(ar, model, me, scene.at[w]), rec(body, positive, {**env, v: scene.at[w]}, bound))
+            if not positive or exact:
+                return ar.any(
+                    [
+                        z3.And(sees(ar, model, me, scene.at[u]), rec(body, False, {**env, v: scene.at[u]}, bound))
+                        for u in others
+                    ]
+                )
+            return ar.true()
+    raise TypeError(f"{c!r}: not a condition of the guard language")
+
+
+# --- the obligations --------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class FamilySpec:
+    """One obligation of a move family: a lemma form, r's class, o's (or :data:`REST`), and for a
+    bridged edge the witness role and the witness's class (or rest)."""
+
+    lemma: Lemma
+    form: str
+    mine: str
+    other: str
+    role: str = ""
+    witness: str = ""
+
+    @property
+    def name(self) -> str:
+        return self.mine
+
+    @property
+    def other_name(self) -> str:
+        return self.other if not self.role else f"{self.other}.by.{self.role}-{self.witness}"
+
+    @property
+    def key(self) -> str:
+        """``lemma/form-mine.and.other[.by.role-witness]``: how result rows and files name the obligation."""
+        return f"{self.lemma}/{self.form}-{self.mine}.and.{self.other_name}"
+
+    @property
+    def claim(self) -> str:
+        return CLAIM[(self.lemma, self.form)]
+
+
+def specs(family: MoveFamily, lemmas: tuple[Lemma, ...]) -> list[FamilySpec]:
+    """Every obligation of ``family`` for ``lemmas``: unordered pairs where the two robots play the same
+    part (``leg``, ``kept``); for ``bridged``, every class of r, every class or rest of o, every witness
+    role of r's guard and every class or rest of the witness."""
+    names = [c.name for c in family.classes]
+    out: list[FamilySpec] = []
+    for lemma in lemmas:
+        for form in FORMS.get(lemma, ()):
+            for i, mine in enumerate(names):
+                if form != BRIDGED:
+                    out += [FamilySpec(lemma, form, mine, other) for other in (REST, *names[i:])]
+                    continue
+                for role in roles(family.get(mine).guard):
+                    out += [
+                        FamilySpec(lemma, form, mine, other, role, witness)
+                        for other in (REST, *names)
+                        for witness in (REST, *names)
+                    ]
+    return out
+
+
+def _move(
+    scene: Scene, family: MoveFamily, name: str, cls: str, witnessed: Witnessed | None, unkept: tuple[str, ...] = ()
+) -> list[z3.BoolRef]:
+    """A mover's leg of class ``cls``: its end, the class's shape, not held, and its guard over the named robots."""
+    ar = scene.ar
+    at = scene.at[name]
+    end = (ar.var(f"{name}.end.x"), ar.var(f"{name}.end.y"))
+    scene.ends[name] = end
+    leg = family.get(cls)
+    env = {"me": at, "end": end}
+    return [
+        assumed(leg.shape, scene, name, env),
+        z3.Not(assumed(family.at_rest, scene, name, env, positive=False)),
+        assumed(leg.guard, scene, name, env, witnessed=witnessed, unkept=unkept),
+    ]
+
+
+def _after(scene: Scene, name: str) -> Pt:
+    return scene.ends.get(name, scene.at[name])
+
+
+def _movers_close(scene: Scene, a: str, b: str) -> z3.BoolRef:
+    ar, model = scene.ar, scene.model
+    a0, a1, b0, b1 = scene.at[a], _after(scene, a), scene.at[b], _after(scene, b)
+    if b not in scene.ends:
+        return segment_close(ar, model, b0, a0, a1)
+    if model.options.timing is Timing.ANY_SPEED:
+        return capsules_close(ar, model, (a0, a1), (b0, b1))
+    d0 = (a0[0] - b0[0], a0[1] - b0[1])
+    d1 = (a1[0] - b1[0], a1[1] - b1[1])
+    return segment_close(ar, model, ar.origin(), d0, d1)
+
+
+def build(
+    ar: Arith,
+    model: Model,
+    family: MoveFamily,
+    spec: FamilySpec,
+    *,
+    vacuity: bool = False,
+    immediate: bool = False,
+    initial: bool = False,
+) -> Built:
+    """The obligation ``spec`` over ``ar``'s domain; ``vacuity`` keeps only "the legs occur together";
+    ``immediate`` leaves out each mover's guard (its shape and at_rest stay): unsat means the claim follows
+    from the classes' shapes alone. ``initial``: the named robots also form an initial configuration (at
+    least delta apart, their visibility graph connected): where a counterexample is replayed from."""
+    at = {"r": ar.origin(), "o": ar.point("o")}
+    if spec.form == BRIDGED:
+        at["b"] = ar.point("b")
+    scene = Scene(ar, model, at)
+    names = list(at)
+    asserts: list[z3.BoolRef] = []
+    for i, a in enumerate(names):
+        asserts += [apart(ar, model, at[a], at[b]) for b in names[i + 1 :]]
+    if initial:
+        asserts += _initial(ar, model, [at[n] for n in names])
+    classes = {"r": spec.mine, "o": spec.other, "b": spec.witness}
+    tests: dict[str, Witnessed] = {}
+    if spec.form == KEPT:
+        tests = {
+            "r": {(role, "o"): None for role in _all_roles(family)},
+            "o": {(role, "r"): None for role in _all_roles(family)},
+        }
+    elif spec.form == BRIDGED:
+        tests = {"r": {(spec.role, "o"): "b"}}
+    for name in names:
+        cls = classes[name]
+        if cls == REST:
+            continue
+        parts = _move(scene, family, name, cls, tests.get(name), ("o",) if spec.form == BRIDGED and name == "r" else ())
+        asserts += parts[:2] if immediate else parts
+    if spec.form in (KEPT, BRIDGED):
+        asserts.append(sees(ar, model, at["r"], at["o"]))
+    bodies = dict(at)
+    bodies.update({f"{n}'": _after(scene, n) for n in names})
+    if not vacuity:
+        asserts.append(_violation(scene, spec))
+    return Built(ar, asserts, bodies, "o")
+
+
+def _initial(ar: Arith, model: Model, points: list[Pt]) -> list[z3.BoolRef]:
+    """The named robots at least delta apart, their visibility graph connected (two or three robots)."""
+    delta = Fraction(model.parameters.delta)
+    pairs = [(i, j) for i in range(len(points)) for j in range(i + 1, len(points))]
+    out = [ar.cmp2(d2(points[i], points[j]), ">=", delta) for i, j in pairs]
+    edges = [sees(ar, model, points[i], points[j]) for i, j in pairs]
+    if len(points) == 2:
+        return [*out, edges[0]]
+    return [*out, z3.AtLeast(*edges, len(points) - 1)]
+
+
+def _all_roles(family: MoveFamily) -> tuple[str, ...]:
+    out: list[str] = []
+    for c in family.classes:
+        out += [r for r in roles(c.guard) if r not in out]
+    return tuple(out)
+
+
+def _violation(scene: Scene, spec: FamilySpec) -> z3.BoolRef:
+    ar, model = scene.ar, scene.model
+    if spec.form == LEG:
+        return _movers_close(scene, "r", "o")
+    r, o = _after(scene, "r"), _after(scene, "o")
+    lost = z3.Not(sees(ar, model, r, o))
+    if spec.form == KEPT:
+        return lost
+    b = _after(scene, "b")
+    return z3.And(lost, z3.Not(z3.And(sees(ar, model, r, b), sees(ar, model, b, o))))
+
+
+def argument(model: Model, family: MoveFamily, spec: FamilySpec, built: Built) -> str:
+    """The obligation's header: the claim, the family, and why ``unsat`` covers every swarm size."""
+
+    def robot(cls: str) -> str:
+        return "at rest" if cls == REST else f"moving by a {cls} leg"
+
+    named = ", ".join(n for n in built.bodies if not n.endswith("'"))
+    witness = f"; the witness b of role {spec.role} {robot(spec.witness)}" if spec.role else ""
+    classes = "; ".join(f"{c.name}: {c.says or 'see the family'}" for c in family.classes)
+    return "\n".join(
+        [
+            f"Obligation: {spec.lemma}, form {spec.form}, r's leg {spec.mine}, the other robot o {robot(spec.other)}"
+            f"{witness}; model {model.name}, move family {family.name}, scheduler {model.options.scheduler}, "
+            f"timing {model.options.timing}.",
+            f"Claim: {spec.claim}.",
+            f"Family: {family.says or family.name}. Classes: {classes}. Longest move {family.max_step} radii. "
+            "Every decision of the rule set is held to the family as it runs (the step lemma in-family) and on "
+            "every view of the lattice (the row in-family/views).",
+            f"Named robots: {named} (r at the origin), pairwise disjoint discs; each mover's shape, not held "
+            "(at_rest), and its guard for every named robot it sees (forall: each named robot; exists: true, "
+            "or the named witness where the form names it).",
+            "Why unsat covers swarms of every size: each asserted condition is implied by the family's guards for "
+            "the named robots in any swarm; every collision, and every edge with a mover at one end, is an "
+            "instance of one obligation (fatline_verify/prove/smt/family.py, the module docstring), so each edge "
+            "before the round is a path of at most two edges after it and the swarm stays connected.",
+            f"Rests on: {family.rests_on or 'nothing outside the family'}.",
+            "Assumptions: exact real arithmetic; unit discs; one shared snapshot per round.",
+        ]
+    )
+
+
+__all__ = ["BRIDGED", "FORMS", "KEPT", "LEG", "FamilySpec", "Scene", "argument", "assumed", "build", "specs"]

@@ -1,0 +1,420 @@
+"""The guard language: conditions on what a robot sees, written once, read by two interpreters.
+
+A condition is a value (a small tree), never a Python ``bool``: ``bool(condition)`` raises, so an
+``if`` or ``and`` on one is caught where it is written. It speaks of points:
+
+- :data:`me` — the deciding robot (the origin of its snapshot), :data:`end` — where its move ends;
+- robots it sees, bound by :func:`forall` (every robot seen) or :func:`exists` (some robot seen, a
+  *witness*, named by its ``role``);
+- ``p.moved(dx, dy)``: a point offset by radii (``c.moved(1, 0)``: one radius right of ``c``).
+
+and of numbers: ``p.x``, ``p.y``, constants in **radii** (``Fraction`` or ``int``), ``+``, ``-``, and
+multiplication by a constant, compared with ``<``, ``<=``, ``==``, ``!=``, ``>=``, ``>``. The
+predicates: :func:`sees` (within the model's visibility), :func:`clear` (a robot's disc clear of the
+mover's swept disc, per the ``contact`` option), :func:`clear_of` (two swept discs clear of each
+other), :func:`distinct`. Connectives: ``&``, ``|``, ``~``, :func:`implies`, :func:`all_of`,
+:func:`any_of`.
+
+The **concrete** interpreter (:func:`holds`) evaluates a condition on a snapshot in lattice units with
+exact integers and ``Fraction`` s, as the engines run; the **symbolic** one
+(:mod:`fatline_verify.prove.smt.family`) turns it into z3 terms over the robots an obligation names.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from fractions import Fraction
+from itertools import count
+from typing import Any
+
+from ...model.geometry import dist2, segment_segment_dist2
+from ...model.numbers import Number, Point
+
+Radii = int | Fraction
+"""A constant of the language, in radii."""
+
+
+class _Value:
+    """A term or condition of the language: never a truth value in Python."""
+
+    __slots__ = ()
+
+    def __bool__(self) -> bool:
+        raise TypeError(
+            "a guard condition is a value of the guard language, not a bool: combine conditions with &, |, ~, "
+            "implies(), forall() and exists(), never with and/or/not/if"
+        )
+
+
+# --- numbers ----------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, eq=False)
+class Num(_Value):
+    """A linear number: ``const + sum(coef * coordinate)``, constants and coefficients in radii."""
+
+    terms: tuple[tuple[str, int, Fraction], ...] = ()
+    """``(point, axis, coefficient)``: ``axis`` 0 for x, 1 for y; a point is named (``"me"``, ``"end"``,
+    a bound variable) with its offset folded into :attr:`const`."""
+    const: Fraction = Fraction(0)
+
+    def __add__(self, other: Num | Radii) -> Num:
+        o = _num(other)
+        return Num(self.terms + o.terms, self.const + o.const)
+
+    __radd__ = __add__
+
+    def __neg__(self) -> Num:
+        return Num(tuple((p, a, -k) for p, a, k in self.terms), -self.const)
+
+    def __sub__(self, other: Num | Radii) -> Num:
+        return self + (-_num(other))
+
+    def __rsub__(self, other: Num | Radii) -> Num:
+        return _num(other) - self
+
+    def __mul__(self, k: Radii) -> Num:
+        if isinstance(k, _Value):
+            raise TypeError("the guard language multiplies numbers by constants only (it stays linear)")
+        f = Fraction(k)
+        return Num(tuple((p, a, c * f) for p, a, c in self.terms), self.const * f)
+
+    __rmul__ = __mul__
+
+    def _cmp(self, op: str, other: Num | Radii) -> Cond:
+        return Cmp(op, self - _num(other))
+
+    def __lt__(self, other: Num | Radii) -> Cond:  # type: ignore[override]
+        return self._cmp("<", other)
+
+    def __le__(self, other: Num | Radii) -> Cond:  # type: ignore[override]
+        return self._cmp("<=", other)
+
+    def __gt__(self, other: Num | Radii) -> Cond:  # type: ignore[override]
+        return self._cmp(">", other)
+
+    def __ge__(self, other: Num | Radii) -> Cond:  # type: ignore[override]
+        return self._cmp(">=", other)
+
+    def __eq__(self, other: object) -> Cond:  # type: ignore[override]
+        return self._cmp("==", other)  # type: ignore[arg-type]
+
+    def __ne__(self, other: object) -> Cond:  # type: ignore[override]
+        return self._cmp("!=", other)  # type: ignore[arg-type]
+
+    __hash__ = None  # type: ignore[assignment]
+
+
+def _num(v: Num | Radii) -> Num:
+    if isinstance(v, Num):
+        return v
+    if isinstance(v, bool) or not isinstance(v, int | Fraction):
+        raise TypeError(f"{v!r}: expected a number of the guard language or a constant in radii (int or Fraction)")
+    return Num((), Fraction(v))
+
+
+@dataclass(frozen=True, eq=False)
+class Pt(_Value):
+    """A point of the language: a named point (``me``, ``end``, a robot bound by a quantifier) and an
+    offset in radii."""
+
+    name: str
+    offset: tuple[Fraction, Fraction] = (Fraction(0), Fraction(0))
+
+    @property
+    def x(self) -> Num:
+        return Num(((self.name, 0, Fraction(1)),), self.offset[0])
+
+    @property
+    def y(self) -> Num:
+        return Num(((self.name, 1, Fraction(1)),), self.offset[1])
+
+    def moved(self, dx: Radii, dy: Radii) -> Pt:
+        """This point offset by ``(dx, dy)`` radii (``c.moved(1, 0)``: one radius right of ``c``)."""
+        return Pt(self.name, (self.offset[0] + Fraction(dx), self.offset[1] + Fraction(dy)))
+
+
+me = Pt("me")
+"""The deciding robot, at the origin of its snapshot."""
+end = Pt("end")
+"""Where the deciding robot's move ends (relative to :data:`me`)."""
+
+# --- conditions -------------------------------------------------------------------------------
+
+
+class Cond(_Value):
+    """A condition of the language."""
+
+    __slots__ = ()
+
+    def __and__(self, other: Cond) -> Cond:
+        return And((self, _cond(other)))
+
+    def __or__(self, other: Cond) -> Cond:
+        return Or((self, _cond(other)))
+
+    def __invert__(self) -> Cond:
+        return Not(self)
+
+
+def _cond(c: object) -> Cond:
+    if not isinstance(c, Cond):
+        raise TypeError(f"{c!r}: expected a condition of the guard language")
+    return c
+
+
+@dataclass(frozen=True, eq=False)
+class Const(Cond):
+    value: bool
+
+
+TRUE = Const(True)
+FALSE = Const(False)
+
+
+@dataclass(frozen=True, eq=False)
+class Cmp(Cond):
+    """``expr op 0``."""
+
+    op: str
+    expr: Num
+
+
+@dataclass(frozen=True, eq=False)
+class Sees(Cond):
+    """``a`` within the model's visibility of ``b`` (centres)."""
+
+    a: Pt
+    b: Pt
+
+
+@dataclass(frozen=True, eq=False)
+class Clear(Cond):
+    """The disc swept along segment ``a0 -> a1`` clear of the disc swept along ``b0 -> b1`` (per ``contact``)."""
+
+    a0: Pt
+    a1: Pt
+    b0: Pt
+    b1: Pt
+
+
+@dataclass(frozen=True, eq=False)
+class Distinct(Cond):
+    a: Pt
+    b: Pt
+
+
+@dataclass(frozen=True, eq=False)
+class And(Cond):
+    parts: tuple[Cond, ...]
+
+
+@dataclass(frozen=True, eq=False)
+class Or(Cond):
+    parts: tuple[Cond, ...]
+
+
+@dataclass(frozen=True, eq=False)
+class Not(Cond):
+    part: Cond
+
+
+@dataclass(frozen=True, eq=False)
+class Forall(Cond):
+    """Every robot the deciding robot sees, bound to :attr:`var`, meets :attr:`body`."""
+
+    var: str
+    body: Cond
+
+
+@dataclass(frozen=True, eq=False)
+class Exists(Cond):
+    """Some robot the deciding robot sees, bound to :attr:`var`, meets :attr:`body`; :attr:`role` names
+    the witness (the prover names a robot for it)."""
+
+    var: str
+    body: Cond
+    role: str
+
+
+_fresh = count()
+
+
+def _bind(fn: Callable[[Pt], Cond], stem: str) -> tuple[str, Cond]:
+    var = f"{stem}{next(_fresh)}"
+    return var, _cond(fn(Pt(var)))
+
+
+def forall(fn: Callable[[Pt], Cond]) -> Cond:
+    """``forall(lambda c: ...)``: every robot the deciding robot sees meets the condition."""
+    return Forall(*_bind(fn, "c"))
+
+
+def exists(fn: Callable[[Pt], Cond], *, role: str) -> Cond:
+    """``exists(lambda b: ..., role="bridge")``: some robot the deciding robot sees, a witness named
+    ``role``, meets the condition."""
+    if not role or not role.isidentifier():
+        raise ValueError(f"role={role!r}: expected a name (an identifier) for the witness")
+    var, body = _bind(fn, role)
+    return Exists(var, body, role)
+
+
+def sees(a: Pt, b: Pt) -> Cond:
+    """``a`` and ``b`` within visibility of each other (the ``visibility`` option: ``<=`` or ``<`` rad_v)."""
+    return Sees(a, b)
+
+
+def clear(c: Pt, start: Pt = me, stop: Pt = end) -> Cond:
+    """The disc of a robot at ``c`` clear of the disc swept along ``start -> stop`` (the mover's path by default)."""
+    return Clear(start, stop, c, c)
+
+
+def clear_of(a0: Pt, a1: Pt, b0: Pt, b1: Pt) -> Cond:
+    """The disc swept along ``a0 -> a1`` clear of the disc swept along ``b0 -> b1``."""
+    return Clear(a0, a1, b0, b1)
+
+
+def distinct(a: Pt, b: Pt) -> Cond:
+    """``a`` and ``b`` are different points (a witness other than the robot it vouches for)."""
+    return Distinct(a, b)
+
+
+def implies(a: Cond, b: Cond) -> Cond:
+    return Or((Not(_cond(a)), _cond(b)))
+
+
+def all_of(*parts: Cond) -> Cond:
+    return And(tuple(_cond(p) for p in parts)) if parts else TRUE
+
+
+def any_of(*parts: Cond) -> Cond:
+    return Or(tuple(_cond(p) for p in parts)) if parts else FALSE
+
+
+# --- the concrete interpreter -------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Ground:
+    """What a condition is evaluated on: the model's lattice (``unit`` lattice units a radius), the
+    robots seen (relative to the deciding robot, lattice units) and the named points."""
+
+    model: Any
+    seen: Sequence[Point]
+    points: Mapping[str, Point] = field(default_factory=dict)
+
+    def bind(self, var: str, p: Point) -> Ground:
+        return Ground(self.model, self.seen, {**self.points, var: p})
+
+
+def _point(p: Pt, g: Ground) -> Point:
+    base = g.points[p.name]
+    rho = g.model.radius
+    if not p.offset[0] and not p.offset[1]:
+        return base
+    return (_exact(base[0] + p.offset[0] * rho), _exact(base[1] + p.offset[1] * rho))
+
+
+def _exact(v: Number) -> Number:
+    return int(v) if isinstance(v, Fraction) and v.denominator == 1 else v
+
+
+def _value(n: Num, g: Ground) -> Number:
+    rho = g.model.radius
+    total: Number = n.const * rho
+    for name, axis, k in n.terms:
+        total += k * g.points[name][axis]
+    return total
+
+
+_OPS: dict[str, Callable[[Any], bool]] = {
+    "<": lambda v: v < 0,
+    "<=": lambda v: v <= 0,
+    ">": lambda v: v > 0,
+    ">=": lambda v: v >= 0,
+    "==": lambda v: v == 0,
+    "!=": lambda v: v != 0,
+}
+
+
+def holds(c: Cond, g: Ground) -> bool:
+    """Whether ``c`` holds on ``g``, exactly (integers and ``Fraction`` s; squared distances)."""
+    match c:
+        case Const(value=v):
+            return v
+        case Cmp(op=op, expr=e):
+            return _OPS[op](_value(e, g))
+        case Sees(a=a, b=b):
+            return bool(g.model.sees(dist2(_point(a, g), _point(b, g))))
+        case Clear(a0=a0, a1=a1, b0=b0, b1=b1):
+            d2 = segment_segment_dist2(_point(a0, g), _point(a1, g), _point(b0, g), _point(b1, g))
+            return not touches(d2, g.model)
+        case Distinct(a=a, b=b):
+            return _point(a, g) != _point(b, g)
+        case And(parts=ps):
+            return all(holds(p, g) for p in ps)
+        case Or(parts=ps):
+            return any(holds(p, g) for p in ps)
+        case Not(part=p):
+            return not holds(p, g)
+        case Forall(var=v, body=b):
+            return all(holds(b, g.bind(v, s)) for s in g.seen)
+        case Exists(var=v, body=b):
+            return any(holds(b, g.bind(v, s)) for s in g.seen)
+    raise TypeError(f"{c!r}: not a condition of the guard language")
+
+
+def touches(d2: Number, model: Any) -> bool:
+    """Whether two discs whose centres are ``d2`` apart (squared) meet, per the ``contact`` option."""
+    from ...model.options import Contact
+
+    limit = model.contact2
+    return bool(d2 < limit or (model.options.contact is Contact.STRICT and d2 == limit))
+
+
+def walk(c: Cond) -> Iterator[Cond]:
+    """``c`` and every condition inside it."""
+    yield c
+    match c:
+        case And(parts=ps) | Or(parts=ps):
+            for p in ps:
+                yield from walk(p)
+        case Not(part=p):
+            yield from walk(p)
+        case Forall(body=b) | Exists(body=b):
+            yield from walk(b)
+
+
+def roles(c: Cond) -> tuple[str, ...]:
+    """The witness roles of ``c``'s existentials, in order, each once."""
+    out: list[str] = []
+    for sub in walk(c):
+        if isinstance(sub, Exists) and sub.role not in out:
+            out.append(sub.role)
+    return tuple(out)
+
+
+__all__ = [
+    "FALSE",
+    "TRUE",
+    "Cond",
+    "Ground",
+    "Num",
+    "Pt",
+    "all_of",
+    "any_of",
+    "clear",
+    "clear_of",
+    "distinct",
+    "end",
+    "exists",
+    "forall",
+    "holds",
+    "implies",
+    "me",
+    "roles",
+    "sees",
+    "touches",
+    "walk",
+]
