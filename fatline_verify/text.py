@@ -329,17 +329,15 @@ def declared_parameters(model: Model | None = None) -> dict[str, tuple[str, Any]
     """The parameters of one's own there are, by their model-file name (``scheduler.k``, ``rules.reach``):
     per name, what declares it ("scheduler 'pairs'") and its :class:`~fatline_verify.model.seams.Param`.
     For a model, its scheduler's and rule set's; else every registered one's (plug-ins loaded)."""
-    from .model.config import seam_owner
+    from .model.config import own_parameters
     from .model.seams import declared
     from .schedulers.activation import ROUND_SCHEDULERS
 
     if model is not None:
-        owners = [("scheduler", str(model.options.scheduler), seam_owner(model, "scheduler"))]
-        owners.append(("rules", model.rules, registry.of(model)))
-    else:
-        names = registry.names()  # loads the plug-ins, which may register schedulers too
-        owners = [("scheduler", kind, found) for kind, found in ROUND_SCHEDULERS.items()]
-        owners += [("rules", rules, registry.get(rules)) for rules in names]
+        return dict(own_parameters(model))
+    names = registry.names()  # loads the plug-ins, which may register schedulers too
+    owners = [("scheduler", kind, found) for kind, found in ROUND_SCHEDULERS.items()]
+    owners += [("rules", rules, registry.get(rules)) for rules in names]
     found: dict[str, tuple[str, Any]] = {}
     for seam, owner_name, owner in owners:
         what = f"scheduler {owner_name!r}" if seam == "scheduler" else f"rule set {owner_name!r}"
@@ -356,7 +354,8 @@ def parameter_lines(model: Model | None = None, name: str | None = None) -> list
 
     params = declared_parameters(model)
     if name is not None and name not in params:
-        known = ", ".join([*CATALOGUE, *params])
+        reads = registry.of(model) if model is not None else None
+        known = ", ".join([*(n for n in CATALOGUE if reads is None or reads.accepts(n)), *params])
         raise InvalidInput(f"option={name!r}: unknown option; expected one of {known}")
     lines: list[str] = []
     for key, (what, param) in params.items():

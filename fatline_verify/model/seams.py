@@ -19,7 +19,8 @@ declares them as ``RuleSet(..., parameters={...})`` and its decision function re
 
 (``rules = "toy-step"``, a string, names a rule set with its defaults, as before: TOML has no key
 that is both a string and a table.) An unknown key or a value of the wrong type is one line, before
-any work. ``fatline explain`` and ``fatline sweep`` do not see these parameters yet.
+any work. ``fatline explain`` lists them (``fatline explain scheduler.k``), ``fatline sweep --vary
+scheduler.k`` takes a model through the values they declare (:meth:`Param.swept`).
 """
 
 from __future__ import annotations
@@ -35,6 +36,9 @@ Value = int | bool | str
 SEAMS = ("scheduler", "rules")
 """The seams whose registered objects may declare parameters, by their table's name."""
 
+MAX_SWEPT = 16
+"""The widest range of whole numbers a sweep takes a parameter through without declared values."""
+
 Settings = tuple[tuple[str, tuple[tuple[str, Value], ...]], ...]
 """A model's values, per seam, every declared parameter (defaults filled), in declaration order."""
 
@@ -48,12 +52,32 @@ class Param:
     doc: str
     minimum: int | None = None
     maximum: int | None = None
+    values: tuple[Value, ...] = ()
+    """The values ``fatline sweep`` takes it through (each a valid value; a model file may set any valid
+    one). Left empty: ``False`` and ``True`` for a flag, every whole number of a range of at most
+    :data:`MAX_SWEPT`, else the parameter is not swept unless it declares them."""
 
     def __post_init__(self) -> None:
         if not isinstance(self.default, int | str):  # bool is an int
             raise ValueError(f"Param default={self.default!r}: expected an int, a bool or a str")
         if not isinstance(self.default, bool) and isinstance(self.default, int):
             self.parse("default", self.default)
+        if not isinstance(self.values, tuple) or len(set(self.values)) != len(self.values):
+            raise ValueError(f"Param values={self.values!r}: expected a tuple of distinct values")
+        for value in self.values:
+            self.parse("values", value)
+
+    def swept(self) -> tuple[Value, ...]:
+        """The values a sweep takes this parameter through (:attr:`values`, or what its type and range
+        allow); ``()`` when it declares none and its range is open or wider than :data:`MAX_SWEPT`."""
+        if self.values:
+            return self.values
+        if isinstance(self.default, bool):
+            return (False, True)
+        lo, hi = self.minimum, self.maximum
+        if isinstance(self.default, int) and lo is not None and hi is not None and hi - lo < MAX_SWEPT:
+            return tuple(range(lo, hi + 1))
+        return ()
 
     def expected(self) -> str:
         """What a value must be, in words."""
@@ -108,4 +132,29 @@ def filled(params: dict[str, Param], given: dict[str, Value]) -> dict[str, Value
     return {key: given.get(key, p.default) for key, p in params.items()}
 
 
-__all__ = ["SEAMS", "Param", "Settings", "Value", "declared", "filled", "parse_table"]
+def with_values(settings: Settings, owners: dict[str, dict[str, Param]], values: dict[str, Value]) -> Settings:
+    """``settings`` with the values ``{"scheduler.k": 3}`` set (each checked), every declared parameter
+    of the seams ``owners`` names (seam -> its owner's parameters) filled."""
+    given = {seam: dict(pairs) for seam, pairs in settings}
+    for name, value in values.items():
+        seam, key = name.split(".", 1)
+        given.setdefault(seam, {})[key] = owners[seam][key].parse(name, value)
+    out = []
+    for seam in SEAMS:
+        params = owners.get(seam, {})
+        if params:
+            out.append((seam, tuple(filled(params, given.get(seam, {})).items())))
+    return tuple(out)
+
+
+__all__ = [
+    "MAX_SWEPT",
+    "SEAMS",
+    "Param",
+    "Settings",
+    "Value",
+    "declared",
+    "filled",
+    "parse_table",
+    "with_values",
+]

@@ -122,9 +122,10 @@ def test_headers_name_the_rule_sets_and_unclaimed_lemmas_say_so(written: tuple[P
     assert "not claimed" not in toy_row  # the toy claims the paper's six
     page = (out / "index.html").read_text()
     assert page.count(">not claimed</td>") == 2  # the prove cells: one "not run" cell, its reason on hover
-    assert "Rule set `step-left`: One radius left toward a robot 3 radii left." in (
-        out / "step-left" / "README.md"
-    ).read_text()
+    assert (
+        "Rule set `step-left`: One radius left toward a robot 3 radii left."
+        in (out / "step-left" / "README.md").read_text()
+    )
     assert "Rule set `toy-step` (reach=3)" in (out / "toy-step" / "README.md").read_text()
 
 

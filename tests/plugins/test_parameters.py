@@ -161,3 +161,110 @@ def test_a_scheduler_with_parameters_must_take_them() -> None:
         register(Deaf())  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="expected an int, a bool or a str"):
         Param(1.5, "a float")  # type: ignore[arg-type]
+
+
+# --- explain and sweep see them ---------------------------------------------------------------------
+
+
+def test_explain_lists_the_parameters_schedulers_and_rule_sets_declare() -> None:
+    everything = fatline("explain")
+    assert everything.returncode == 0, everything.stderr
+    assert (
+        "scheduler.k (a parameter of scheduler 'pairs', set in the model file's [scheduler] table)" in everything.stdout
+    )
+    assert (
+        "rules.reach (a parameter of rule set 'toy-step', set in the model file's [rules] table)" in everything.stdout
+    )
+    one = fatline("explain", "scheduler.k")
+    assert one.stdout == (
+        "scheduler.k (a parameter of scheduler 'pairs', set in the model file's [scheduler] table)\n"
+        "  at most k robots a round\n  a whole number 1..64; default 2\n"
+    )
+    mine = fatline("explain", "--model", str(MODEL))
+    assert "quadrants" not in mine.stdout  # the toy reads none of the paper's readings
+    assert mine.stdout.startswith("scheduler\n") and "goal\n" in mine.stdout
+    assert mine.stdout.endswith("  a whole number >= 1; default 3 [model toy-step: 3]\n")
+    bad = fatline("explain", "rules.far", "--model", str(MODEL))
+    assert (bad.returncode, bad.stdout) == (2, "") and bad.stderr.count("\n") == 1
+    assert bad.stderr == (
+        "fatline: error: option='rules.far': unknown option; expected one of scheduler, motion, timing, contact, "
+        "goal, rules.reach\n"
+    )
+
+
+def test_sweep_takes_a_rule_set_s_parameter_through_its_values(tmp_path: Path) -> None:
+    """``--vary rules.reach``: one sweep per declared value (3, 4), each of the model with that value, in a
+    directory of its own, with its own fingerprint; the default ``--vary`` takes it too."""
+    out = tmp_path / "sweeps"
+    argv = ["--lemma", "connectivity,progress", "--robots", "2..3", "--out", str(out), "-q"]
+    got = fatline("sweep", str(MODEL), "--vary", "rules.reach", *argv)
+    assert got.returncode == 1, got.stderr  # progress is refuted under both values
+    assert [line for line in got.stdout.splitlines() if line.startswith("rules.reach-")] == [
+        "rules.reach-3: rules.reach=3",
+        "rules.reach-4: rules.reach=4",
+    ]
+    saved = {k: json.loads((out / "toy-step" / f"rules.reach-{k}" / "sweep.json").read_text()) for k in (3, 4)}
+    assert {k: d["model"]["rules"] for k, d in saved.items()} == {
+        3: {"name": "toy-step", "reach": 3},
+        4: {"name": "toy-step", "reach": 4},
+    }
+    assert saved[3]["fingerprint"] != saved[4]["fingerprint"]
+    argv[-2] = str(tmp_path / "default")  # the default --vary: the declared parameter and the options
+    again = fatline("sweep", str(MODEL), *argv)
+    assert again.returncode == 1 and "rules.reach-4: rules.reach=4" in again.stdout, again.stderr
+
+
+@pytest.mark.parametrize(
+    ("model", "vary", "error"),
+    [
+        (PAIRS, "scheduler.k", "vary='scheduler.k': scheduler 'pairs' declares no values to sweep it through"),
+        (PAIRS, "rules.reach", "vary='rules.reach': not a parameter of model paper-pairs's scheduler or rule set; "),
+        (MODEL, "rules.reach,rules.reach", "vary='rules.reach,rules.reach': a parameter is named twice"),
+        (MODEL, "rules.reach,colour", "vary='colour': unknown option; expected one of "),
+    ],
+)
+def test_a_bad_parameter_to_sweep_is_one_line_before_any_work(
+    tmp_path: Path, model: Path, vary: str, error: str
+) -> None:
+    got = fatline("sweep", str(model), "--vary", vary, "--out", str(tmp_path / "s"), "-q")
+    assert (got.returncode, got.stdout) == (2, ""), got.stdout
+    assert got.stderr.startswith(f"fatline: error: {error}") and got.stderr.count("\n") == 1, got.stderr
+    assert not (tmp_path / "s").exists()
+
+
+def test_a_sweep_s_fingerprint_holds_the_plug_ins_sources(installed: None, monkeypatch: pytest.MonkeyPatch) -> None:
+    """As check's and prove's do: an edited plug-in is never resumed from (a built-in model's is as it was)."""
+    from fatline_verify import provenance
+    from fatline_verify.sweep.run import Sweep, SweepBounds
+    from fatline_verify.sweep.space import Space
+
+    def fingerprint(model):  # type: ignore[no-untyped-def]
+        bounds = SweepBounds((2, 3), (7, 7), None, None, None)
+        return Sweep(Space(model, ()), bounds, Path("unused"), (), 2**30, 0).fingerprint()
+
+    toy, paper = load_model(MODEL), load_model("paper")
+    before = fingerprint(toy), fingerprint(paper)
+    real = provenance.plugin_digest
+    monkeypatch.setattr(provenance, "plugin_digest", lambda model: real(model) and "edited")
+    assert fingerprint(toy) != before[0]
+    assert provenance.plugin_digest(toy) == "edited"
+    assert fingerprint(paper) != before[1]  # the toy lemmas installed decide for the paper's model too
+    monkeypatch.setattr(provenance, "plugin_digest", lambda model: "")  # nothing outside the package decides
+    from fatline_verify.cache import fingerprint as plain
+    from fatline_verify.sweep.run import VERSION
+
+    bounds = SweepBounds((2, 3), (7, 7), None, None, None).as_json()
+    assert fingerprint(paper) == plain(paper, "sweep", vary=[], bounds=bounds, lemmas=[], version=VERSION)
+
+
+def test_the_shipped_tables_are_in_the_source_digest(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A table rule set decides by its JSON file: editing one renames the compiled engine's kept answers."""
+    from fatline_verify import provenance
+
+    root = Path(provenance.__file__).resolve().parent
+    tables = sorted(f for pattern in provenance.DATA for f in root.glob(pattern))
+    assert [t.name for t in tables] == ["q1-7x7-ssync.json", "q1-9x9-ssync.json"]
+    before = provenance.source_digest.__wrapped__()
+    real = provenance._file_digest
+    monkeypatch.setattr(provenance, "_file_digest", lambda p: "edited" if p == tables[0] else real(p))
+    assert provenance.source_digest.__wrapped__() != before
