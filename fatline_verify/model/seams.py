@@ -25,6 +25,7 @@ scheduler.k`` takes a model through the values they declare (:meth:`Param.swept`
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Any
 
@@ -60,12 +61,15 @@ class Param:
     def __post_init__(self) -> None:
         if not isinstance(self.default, int | str):  # bool is an int
             raise ValueError(f"Param default={self.default!r}: expected an int, a bool or a str")
-        if not isinstance(self.default, bool) and isinstance(self.default, int):
-            self.parse("default", self.default)
         if not isinstance(self.values, tuple) or len(set(self.values)) != len(self.values):
             raise ValueError(f"Param values={self.values!r}: expected a tuple of distinct values")
-        for value in self.values:
-            self.parse("values", value)
+        try:  # a declaration's mistake is the plug-in's (ValueError when it registers), not a model's
+            if not isinstance(self.default, bool) and isinstance(self.default, int):
+                self.parse("default", self.default)
+            for value in self.values:
+                self.parse("values", value)
+        except InvalidModel as exc:
+            raise ValueError(f"Param {exc}") from None
 
     def swept(self) -> tuple[Value, ...]:
         """The values a sweep takes this parameter through (:attr:`values`, or what its type and range
@@ -104,12 +108,23 @@ class Param:
         return value  # type: ignore[return-value]
 
 
+KEY = re.compile(r"^[A-Za-z_][A-Za-z0-9_-]*$")
+"""A parameter's name: a bare TOML key without a dot (``SEAM.NAME`` names it on the command line)."""
+
+
 def declared(owner: Any) -> dict[str, Param]:
     """The parameters ``owner`` (a registered scheduler or rule set) declares; none when it has no
-    ``parameters`` (a plug-in written before parameters existed)."""
+    ``parameters`` (a plug-in written before parameters existed). A declaration that is not a dict of
+    names to :class:`Param` is a one-line ``ValueError`` (raised when the plug-in registers)."""
     found = getattr(owner, "parameters", None) or {}
-    if not isinstance(found, dict) or not all(isinstance(k, str) and isinstance(p, Param) for k, p in found.items()):
-        raise ValueError(f"{owner!r}: parameters must be a dict of name -> Param")
+    name = getattr(owner, "name", None) or getattr(owner, "kind", None) or type(owner).__name__
+    if not isinstance(found, dict):
+        raise ValueError(f"{name}: parameters={found!r}: expected a dict of name -> Param (fatline_verify.model.seams)")
+    for key, param in found.items():
+        if not isinstance(key, str) or not KEY.match(key):
+            raise ValueError(f"{name}: parameters key {key!r}: expected a name of letters, digits, '_' and '-'")
+        if not isinstance(param, Param):
+            raise ValueError(f"{name}: parameters[{key!r}]={param!r}: expected a Param (fatline_verify.model.seams)")
     return found
 
 
@@ -119,7 +134,8 @@ def parse_table(seam: str, what: str, params: dict[str, Param], raw: object) -> 
     if raw is None:
         raw = {}
     if not isinstance(raw, dict):
-        raise InvalidModel(f"{seam}={raw!r}: expected a table of the {what}'s parameters")
+        where = " (the scheduler itself is [options] scheduler)" if seam == "scheduler" else ""
+        raise InvalidModel(f"{seam}={raw!r}: expected a [{seam}] table of the parameters of the {what}{where}")
     for key, value in raw.items():
         if key not in params:
             known = f"expected one of {', '.join(params)}" if params else f"the {what} takes no parameters"

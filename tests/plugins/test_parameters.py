@@ -97,7 +97,11 @@ def test_k_is_in_the_fingerprint_the_trace_and_replay(tmp_path: Path, installed:
         ('[scheduler]\nk = "two"\n', "scheduler.k='two': expected a whole number 1..64 (at most k robots a round)"),
         ("[scheduler]\nk = 0\n", "scheduler.k=0: expected a whole number 1..64 (at most k robots a round)"),
         ("[scheduler]\nk = true\n", "scheduler.k=True: expected a whole number 1..64 (at most k robots a round)"),
-        ("scheduler = 3\n", "scheduler=3: expected a table of the scheduler 'pairs''s parameters"),
+        (
+            "scheduler = 3\n",
+            "scheduler=3: expected a [scheduler] table of the parameters of the scheduler 'pairs' (the scheduler "
+            "itself is [options] scheduler)",
+        ),
     ],
 )
 def test_a_bad_scheduler_parameter_is_one_line_before_any_work(tmp_path: Path, table: str, error: str) -> None:
@@ -268,3 +272,25 @@ def test_the_shipped_tables_are_in_the_source_digest(monkeypatch: pytest.MonkeyP
     real = provenance._file_digest
     monkeypatch.setattr(provenance, "_file_digest", lambda p: "edited" if p == tables[0] else real(p))
     assert provenance.source_digest.__wrapped__() != before
+
+
+def test_a_bad_declaration_is_refused_when_the_plug_in_registers() -> None:
+    """A plug-in that declares a parameter wrongly is told so in one line when it registers (through an
+    entry point: "plugin NAME cannot be loaded (ValueError: ...)"), never when a model is read."""
+    from fatline_verify.model.seams import Param
+
+    def stay(snapshot, model):  # type: ignore[no-untyped-def]
+        return None
+
+    for parameters, error in (
+        ({"k": 3}, r"bad: parameters\['k'\]=3: expected a Param \(fatline_verify.model.seams\)"),
+        ({"a.b": Param(1, "x")}, r"bad: parameters key 'a.b': expected a name of letters, digits, '_' and '-'"),
+        ([("k", Param(1, "x"))], r"bad: parameters=\[.*\]: expected a dict of name -> Param"),
+    ):
+        with pytest.raises(ValueError, match=error):
+            registry.register(registry.RuleSet("bad", stay, "bad", parameters=parameters))  # type: ignore[arg-type]
+    assert "bad" not in registry._REGISTRY
+    with pytest.raises(ValueError, match=r"Param values=\(3, 3\): expected a tuple of distinct values"):
+        Param(3, "x", values=(3, 3))
+    with pytest.raises(ValueError, match=r"Param values=0: expected a whole number >= 1 \(x\)"):
+        Param(3, "x", minimum=1, values=(0, 3))
