@@ -5,14 +5,11 @@ ASYNC judged on the events the executable model plays."""
 from __future__ import annotations
 
 import json
-import os
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
-from tests.plugins.cli import PAIRS, ROOT, SITE, TOY_DIST, fatline, without_plugin
+from tests.plugins.cli import PAIRS, ROOT, TOY_DIST, evidence_with_and_without, fatline, without_plugin
 
 # --- issue 39: a plug-in's lemma, scheduler and traces are first-class -------------------------------
 
@@ -176,20 +173,7 @@ def test_installing_the_toy_lemmas_leaves_paper_async_as_it_was(tmp_path: Path) 
     paper-async`` with the plug-in installed gives the paper's lemmas the same searches, verdicts and
     traces as without it; no-left holds (no robot's x decreases in any event the model plays) and
     no-down has replayed witnesses."""
-    runs = {}
-    for name, env_path in (("without", ""), ("with", str(SITE))):
-        out = tmp_path / f"{name}.json"
-        env = {**os.environ, "PYTHONPATH": env_path}
-        argv = ["check", "paper-async", "--robots", "2..3", "--json", str(out), "--traces", str(tmp_path / name), "-q"]
-        got = subprocess.run(
-            [sys.executable, "-m", "fatline_verify.cli", *argv], capture_output=True, text=True, env=env, cwd=ROOT
-        )
-        assert got.returncode == 1, got.stderr
-        data = json.loads(out.read_text())
-        searches = [{k: v for k, v in s.items() if k not in ("seconds", "bytes")} for s in data["searches"]]
-        rows = {(r["lemma"], r["robots"]): (r["verdict"], r["reason"], r["witness_rounds"]) for r in data["lemmas"]}
-        traces = {p.name: p.read_text() for p in (tmp_path / name).glob("*.json")}
-        runs[name] = (searches, rows, traces)
+    runs = evidence_with_and_without("paper-async", "2..3", tmp_path)
     (s0, r0, t0), (s1, r1, t1) = runs["without"], runs["with"]
     assert s0 == s1
     assert {k: v for k, v in r1.items() if k[0] not in ("no-left", "no-down")} == r0

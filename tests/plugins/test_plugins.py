@@ -16,7 +16,7 @@ import pytest
 from fatline_verify.errors import InvalidModel
 from fatline_verify.model.config import load_model, model_from_mapping, model_to_mapping
 from fatline_verify.rules import registry
-from tests.plugins.cli import LEMMAS, MODEL, PAIRS, ROOT, SITE, fatline
+from tests.plugins.cli import LEMMAS, MODEL, PAIRS, ROOT, SITE, evidence_with_and_without, fatline
 
 
 def test_the_entry_point_registers_the_rule_set(toy: registry.RuleSet) -> None:
@@ -181,36 +181,7 @@ def test_a_trace_of_the_registered_lemma_is_rejudged_on_replay(no_left: object) 
 def test_adding_a_lemma_changes_no_other_lemma_s_evidence(tmp_path: Path) -> None:
     """``fatline check paper`` with and without the plug-in: the same states, transitions, verdicts and
     witnesses for every lemma of the paper; only the plug-in's row is new."""
-    runs = {}
-    for name, env_path in (("without", ""), ("with", str(SITE))):
-        out = tmp_path / f"{name}.json"
-        env = {**os.environ, "PYTHONPATH": env_path}
-        got = subprocess.run(
-            [
-                sys.executable,
-                "-m",
-                "fatline_verify.cli",
-                "check",
-                "paper",
-                "--robots",
-                "2..3",
-                "--json",
-                str(out),
-                "--traces",
-                str(tmp_path / name),
-                "-q",
-            ],
-            capture_output=True,
-            text=True,
-            env=env,
-            cwd=ROOT,
-        )
-        assert got.returncode == 1, got.stderr
-        data = json.loads(out.read_text())
-        searches = [{k: v for k, v in s.items() if k not in ("seconds", "bytes")} for s in data["searches"]]
-        rows = {(r["lemma"], r["robots"]): (r["verdict"], r["reason"], r["witness_rounds"]) for r in data["lemmas"]}
-        traces = {p.name: p.read_text() for p in (tmp_path / name).glob("*.json")}
-        runs[name] = (searches, rows, traces)
+    runs = evidence_with_and_without("paper", "2..3", tmp_path)
     (s0, r0, t0), (s1, r1, t1) = runs["without"], runs["with"]
     assert s0 == s1
     assert {k: v for k, v in r1.items() if k[0] not in ("no-left", "no-down")} == r0
