@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 import re
+import shlex
 import time
 from typing import Any
 
@@ -189,12 +190,12 @@ def _duration_text(seconds: float) -> str:
 
 def _command(args: argparse.Namespace, name: str) -> str:
     """The command that resumes this sweep and rewrites its page (the settings that name the sweep)."""
-    parts = ["fatline sweep", args.model or name]
+    parts = ["fatline sweep", shlex.quote(str(args.model or name))]
     for flag in ("vary", "lemma", "robots", "window", "bound", "q", "max_states", "out"):
         value = getattr(args, flag)
         if value is not None and not (flag == "out" and str(value) == "sweeps"):
-            parts.append(f"--{flag.replace('_', '-')} {value}")
-    return " ".join(str(p) for p in parts)
+            parts.append(f"--{flag.replace('_', '-')} {shlex.quote(str(value))}")
+    return " ".join(parts)
 
 
 def parse_lemmas(text: str | None) -> tuple[Lemma, ...]:

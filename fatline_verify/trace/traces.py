@@ -111,6 +111,20 @@ def require_plugins(doc: dict[str, Any], where: str = "trace") -> None:
                 f"{where}: {what} {name!r} is a plug-in that is not installed; expected its package "
                 f"installed: pip install '{package}'"
             )
+    recorded = {entry["kind"] for entry in doc.get("plugins", ())}
+    model = doc.get("model") or {}
+    rules = model.get("rules")
+    named = {
+        "rules": rules.get("name") if isinstance(rules, dict) else rules,
+        "scheduler": (model.get("options") or {}).get("scheduler"),
+    }
+    for kind, name in named.items():  # a trace written before traces named their plug-ins
+        if isinstance(name, str) and kind not in recorded and not known[kind](name):
+            what = {"rules": "rule set"}.get(kind, kind)
+            raise InvalidTrace(
+                f"{where}: {kind}={name!r}: unknown {what}; expected one of {', '.join(_installed(kind))} (a "
+                f"plug-in's {what}: install the package that registers it; this trace does not record which)"
+            )
     focus = doc["violation"]["property"] if doc.get("violation") else None
     if focus is not None and focus not in {m.value for m in Lemma} and lemma_registry.find(focus) is None:
         names = [*(m.value for m in Lemma), *(m.name for m in lemma_registry.registered())]
@@ -118,6 +132,15 @@ def require_plugins(doc: dict[str, Any], where: str = "trace") -> None:
             f"{where}: violation.property={focus!r}: unknown lemma; expected one of {', '.join(names)} "
             "(a plug-in's lemma: install its package)"
         )
+
+
+def _installed(kind: str) -> list[str]:
+    """The rule sets (``kind="rules"``) or schedulers there are here, plug-ins loaded."""
+    if kind == "rules":
+        return list(rules_registry.names())
+    from ..schedulers.activation import ROUND_SCHEDULERS
+
+    return [*ROUND_SCHEDULERS, Scheduler.ASYNC.value]
 
 
 def _scheduler_known(name: str) -> bool:

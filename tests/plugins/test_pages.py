@@ -6,6 +6,7 @@ names the model file; ``replay`` without the package says what to install."""
 
 from __future__ import annotations
 
+import json
 import re
 import shlex
 import shutil
@@ -165,4 +166,13 @@ def test_replay_without_the_rule_set_s_package_says_what_to_install(written: tup
     assert got.stderr == (
         f"fatline: error: {trace}: rule set 'toy-step' is a plug-in that is not installed; expected its package "
         "installed: pip install 'toy-fatline-plugin==0.1'\n"
+    )
+    old = json.loads((work / trace).read_text())  # as written before traces named their plug-ins
+    del old["plugins"]
+    (work / "old.json").write_text(json.dumps(old))
+    got = without_plugin("replay", "old.json", cwd=work)
+    assert (got.returncode, got.stdout) == (2, "") and got.stderr.count("\n") == 1
+    assert got.stderr.startswith("fatline: error: old.json: rules='toy-step': unknown rule set; expected one of ")
+    assert got.stderr.rstrip().endswith(
+        "(a plug-in's rule set: install the package that registers it; this trace does not record which)"
     )
