@@ -17,7 +17,7 @@ from ..model.config import IMPLIED
 from ..model.options import CATALOGUE
 from ..prove.coverage import LemmaVerdict, lemma_verdicts
 from ..schedulers.activation import round_scheduler
-from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, violation_line
+from ..text import SHORT, NumberStyle, exact_text, violation_line
 from .data import ModelReport
 from .places import Places
 
@@ -77,10 +77,6 @@ table.matrix { width: 100%; font-size: 0.76em; }
 .exact { border-bottom: 1px dotted #777; cursor: help; }
 code { background: #f5f5f5; padding: 0 0.2em; }
 """
-
-DOCS_LINK = f"../{READINGS_DOC}"
-"""The readings catalogue, relative to the report root, where ``reports/`` sits beside ``docs/`` (a
-report elsewhere: :meth:`.places.Places.readings`)."""
 
 
 def worst_of(rows: list[dict[str, Any]], lemma: str) -> tuple[str, int] | None:
@@ -253,7 +249,6 @@ def html_page(title: str, body: str, root: str, wide: bool = False) -> str:
 __all__ = [
     "ASSETS",
     "CSS",
-    "DOCS_LINK",
     "NOT_CLAIMED",
     "PROVER_LEMMAS",
     "RANK",

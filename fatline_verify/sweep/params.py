@@ -59,8 +59,8 @@ def split_vary(text: str | None, model: Model) -> tuple[str | None, tuple[Swept,
         swept.append(Swept(name, values))
     if len(set(params)) != len(params):
         raise InvalidInput(f"vary={text!r}: a parameter is named twice; expected each once")
-    if params and not options:
-        return "", tuple(swept)  # the parameters alone: no option varied
+    if not options:  # the parameters alone: no option varied (nothing named at all: parse_vary says so)
+        return ("" if params else text), tuple(swept)
     return options, tuple(swept)
 
 
