@@ -11,7 +11,8 @@ import sys
 import time
 
 from fatline_verify.model.config import load_model
-from fatline_verify.repair.reach import PROVED, Kind, reach
+from fatline_verify.repair.reach import PROVED, Kind
+from fatline_verify.repair.search import reach
 
 FAMILIES = {
     "proved (right, vertical)": PROVED,

@@ -23,6 +23,11 @@ class InvalidTrace(FatlineError):
     """A trace file is malformed: not JSON, not the schema, or names an unknown option."""
 
 
+class ForbiddenRound(InvalidTrace):
+    """A trace's round activates robots its scheduler never activates together (more than ``k`` under a
+    scheduler that allows at most ``k``): the file does not record a run of its model."""
+
+
 class Unsupported(FatlineError):
     """A reading that is selectable but not implemented by the requested engine."""
 

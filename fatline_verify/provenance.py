@@ -3,7 +3,8 @@ after the code that gave it changed.
 
 Two parts, kept apart because the caches key on them differently:
 
-- :func:`source_digest`: every Python source file of this package (read once a process). The compiled
+- :func:`source_digest`: every Python source file of this package, and the shipped rule tables (JSON files
+  whose entries are a rule set's decisions; read once a process). The compiled
   engine's kept answers (:mod:`fatline_verify.check.answers`) are named by it; the report's and the
   prover's caches are not (they are keyed by ``CHECKER_VERSION`` and ``ENCODING_VERSION``, bumped by
   hand, so the committed results of the built-in models keep their fingerprints).
@@ -68,11 +69,17 @@ def _tree_digest(root: Path, files: Iterable[Path]) -> str:
     return h.hexdigest()
 
 
+DATA = ("rules/table/tables/*.json",)
+"""Data files of this package that decide for a model, as globs under it: the shipped tables, each a rule
+set (:mod:`fatline_verify.rules.table`) whose decisions are the file's."""
+
+
 @functools.cache
 def source_digest() -> str:
-    """SHA-256 of every Python source file of this package (path and bytes), read once a process."""
+    """SHA-256 of every Python source file of this package and of every data file that decides
+    (:data:`DATA`), path and bytes, read once a process."""
     root = Path(__file__).resolve().parent
-    return _tree_digest(root, root.rglob("*.py"))
+    return _tree_digest(root, [*root.rglob("*.py"), *(f for pattern in DATA for f in root.glob(pattern))])
 
 
 def _module_of(obj: Any) -> str:
@@ -197,6 +204,7 @@ def plugin_settings(model: Any) -> dict[str, str]:
 
 
 __all__ = [
+    "DATA",
     "PACKAGE",
     "UNREADABLE",
     "deciders",

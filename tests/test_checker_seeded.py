@@ -130,10 +130,13 @@ def test_approach_fails_alone_when_the_goal_is_already_met():
 
 
 def test_lasso_replay_rejects_a_broken_loop():
+    """Only one robot steps down in the loop's last round: a round FSYNC never plays (both robots are
+    enabled), refused as such before the loop is judged; the loop recorded as closing no longer would."""
     model, result = slide_down()
     witness = next(r for r in result.results if r.lemma is Lemma.TERMINATION).witness
-    witness["rounds"][-1]["active"] = [0]  # only one robot steps down: the loop no longer closes
-    from fatline_verify.errors import TraceDidNotReproduce
+    witness["rounds"][-1]["active"] = [0]
+    from fatline_verify.errors import ForbiddenRound
 
-    with pytest.raises(TraceDidNotReproduce):
+    last = len(witness["rounds"])
+    with pytest.raises(ForbiddenRound, match=rf"round {last} activates robots 0 of 2; expected every robot"):
         check_replay(witness, model)

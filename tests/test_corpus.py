@@ -51,9 +51,18 @@ def test_a_corpus_trace_replayed_under_another_model_shows_the_difference(capsys
 
 @pytest.mark.slow  # every shipped model's pages and pictures drawn again (about 650 SVG frames);
 # the default tier regenerates one model's among the others' (below)
+def _beside_docs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> tuple[Path, Path]:
+    """``reports`` and ``proofs`` named as ``fatline report`` in the repository names them (relative to
+    the directory it runs in: the pages' commands name them so), with the readings catalogue beside them
+    (the pages link it where it is found above the report)."""
+    (tmp_path / "docs").mkdir()
+    shutil.copyfile(ROOT / "docs" / "readings.md", tmp_path / "docs" / "readings.md")
+    monkeypatch.chdir(tmp_path)
+    return Path("reports"), Path("proofs")
+
+
 def test_reports_regenerate_byte_identically(tmp_path, monkeypatch):
-    monkeypatch.chdir(ROOT)
-    out, proofs = tmp_path / "reports", tmp_path / "proofs"
+    out, proofs = _beside_docs(tmp_path, monkeypatch)
     for model in shipped_models():
         (out / model.stem).mkdir(parents=True)
         shutil.copyfile(ROOT / "reports" / model.stem / "check.json", out / model.stem / "check.json")
@@ -71,9 +80,8 @@ def test_one_models_report_regenerates_byte_identically_among_the_others(tmp_pat
     is the committed one byte for byte."""
     from fatline_verify.report.pages import ASSETS
 
-    monkeypatch.chdir(ROOT)
     name = "paper-async"  # the quickest shipped model to draw again (33 pictures, no prover rows)
-    out, proofs = tmp_path / "reports", tmp_path / "proofs"
+    out, proofs = _beside_docs(tmp_path, monkeypatch)
     shutil.copytree(ROOT / "reports", out)
     shutil.copytree(ROOT / "proofs", proofs)
     shutil.rmtree(out / name / "img")

@@ -16,17 +16,8 @@ from fatline_verify.lemmas.properties import Lemma, Verdict
 from fatline_verify.model.options import Scheduler
 from fatline_verify.prove.smt import whatif as w
 from fatline_verify.prove.whatif import obligations, prove_whatif
-from fatline_verify.repair.reach import (
-    PROVED,
-    Family,
-    Kind,
-    canonical,
-    confirm_stuck,
-    family_legs,
-    left_alone_reach,
-    reach,
-    way_to_line,
-)
+from fatline_verify.repair.reach import PROVED, Family, Kind, canonical, family_legs, left_alone_reach
+from fatline_verify.repair.search import confirm_stuck, reach, way_to_line
 from fatline_verify.schedulers.round import closest_dist2, collides, snapshot
 from fatline_verify.synth.certificate import certify
 from fatline_verify.synth.encode import synthesise

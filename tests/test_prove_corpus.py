@@ -35,7 +35,7 @@ from fatline_verify.prove.prover import corpus_known, prove
 from fatline_verify.prove.search import prove_spec
 from fatline_verify.prove.smt.claims import Spec
 from fatline_verify.prove.tasks import NotEncodedModel, paper_part, row_key, task_key, tasks_for
-from fatline_verify.text import prove_deciders
+from fatline_verify.prove.text import prove_deciders
 from tests.conftest import task_named
 
 ROOT = Path(__file__).resolve().parent.parent

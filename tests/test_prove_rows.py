@@ -19,7 +19,7 @@ from fatline_verify.progress import Progress
 from fatline_verify.prove import prover
 from fatline_verify.prove.prover import ProofResult
 from fatline_verify.prove.tasks import row_key
-from fatline_verify.text import SHORT_REASON, prove_counts, prove_lines, short_reason
+from fatline_verify.prove.text import SHORT_REASON, prove_counts, prove_lines, short_reason
 
 ROOT = Path(__file__).resolve().parent.parent
 SHIPPED = sorted(p.parent.name for p in (ROOT / "proofs").glob("*/results.json"))

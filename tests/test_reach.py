@@ -14,17 +14,8 @@ from fatline_verify.cli import main
 from fatline_verify.model.config import load_model
 from fatline_verify.model.swarm import is_connected, is_goal
 from fatline_verify.repair.pocket import POCKET
-from fatline_verify.repair.reach import (
-    PROVED,
-    Family,
-    Kind,
-    canonical,
-    confirm_stuck,
-    family_legs,
-    reach,
-    replay_witness,
-    universal_deadlock,
-)
+from fatline_verify.repair.reach import PROVED, Family, Kind, canonical, family_legs, universal_deadlock
+from fatline_verify.repair.search import confirm_stuck, reach, replay_witness
 from fatline_verify.schedulers.round import decide_all, enabled, play_round, snapshot
 
 PROGRESS = "bench/repaired-progress.toml"
@@ -77,7 +68,8 @@ def test_the_pocket_is_stuck_and_left_legs_free_it():
 )
 def test_two_phases_find_what_one_search_of_every_set_of_movers_finds(q, n):
     """Phase 1 (one mover) is a shortcut: the stuck sets equal those of one search with every set of movers."""
-    from fatline_verify.repair.reach import _Graph, starts
+    from fatline_verify.repair.reach import starts
+    from fatline_verify.repair.search import _Graph
 
     model = load_model("repaired").with_q(q)
     family = Family(model)

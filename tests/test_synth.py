@@ -12,7 +12,8 @@ from fatline_verify.model.config import load_model
 from fatline_verify.model.options import Scheduler
 from fatline_verify.model.swarm import is_goal
 from fatline_verify.repair.pocket import POCKET
-from fatline_verify.repair.reach import PROVED, Family, Kind, canonical, family_legs, reach, starts
+from fatline_verify.repair.reach import PROVED, Family, Kind, canonical, family_legs, starts
+from fatline_verify.repair.search import reach
 from fatline_verify.rules import registry
 from fatline_verify.rules.table.algorithm import TABLES, load
 from fatline_verify.schedulers.round import decide_all

@@ -13,9 +13,10 @@ from .common import EXIT_OK, add_command, emit, exit_codes, model_arg
 
 
 def cmd_explain(args: argparse.Namespace) -> int:
-    if args.option is not None and args.option not in CATALOGUE:
-        raise InvalidInput(f"option={args.option!r}: unknown option; expected one of {', '.join(CATALOGUE)}")
+    """The catalogue, an option of it, or a parameter a scheduler or rule set declares (``scheduler.k``)."""
     model = model_arg(args.model) if args.model is not None else None
+    if args.option is not None and args.option not in CATALOGUE and "." not in args.option:
+        raise InvalidInput(f"option={args.option!r}: unknown option; expected one of {', '.join(CATALOGUE)}")
     emit(explain_lines(args.option, model))
     return EXIT_OK
 
@@ -30,9 +31,17 @@ def cmd_models(args: argparse.Namespace) -> int:
 
 
 def register(sub: Any) -> None:
-    p = add_command(sub, "explain", "print the paper's open points: quote, readings, default", exit_codes("printed"))
-    p.add_argument("option", nargs="?", help="one option (default: all)")
-    p.add_argument("--model", help="mark the readings this model file selects")
+    p = add_command(
+        sub,
+        "explain",
+        "print the paper's open points (quote, readings, default) and the parameters schedulers and rule sets declare",
+        exit_codes("printed"),
+    )
+    p.add_argument("option", nargs="?", help="one option, or a parameter as SEAM.NAME (scheduler.k; default: all)")
+    p.add_argument(
+        "--model",
+        help="mark the readings and parameter values this model file selects (only the options its rule set reads)",
+    )
     p.set_defaults(handler=cmd_explain)
 
     p = add_command(sub, "models", "list the shipped model files", exit_codes("listed"))

@@ -10,7 +10,7 @@ from ..junit import claim_junit, prove_suites, write_junit
 from ..lemmas.properties import PROVED_LEMMAS, Lemma
 from ..outputs import Kind, Output, child, claim_dir, claim_file, claim_files, distinct_outputs, write_json
 from ..progress import Progress
-from ..text import prove_lines
+from ..prove.text import prove_lines
 from .common import (
     EXIT_FOUND,
     EXIT_INCONCLUSIVE,

@@ -30,8 +30,9 @@ SHOWN = 10
 
 
 def cmd_reach(args: argparse.Namespace) -> int:
-    from ..repair.reach import reach, refuse
+    from ..repair.reach import refuse
     from ..repair.reach_text import reach_lines, reach_to_json
+    from ..repair.search import reach
 
     model = model_arg(args.model)
     kinds = leg_kinds(args.with_)

@@ -6,7 +6,9 @@ finding about ``M``: "the counterexample is gone under M" when the recorded viol
 trace without one, the recorded outcome) no longer happens, else "still VIOLATED (lemma) under M;
 recorded values differ: ...". Both are exit 1, and so is a trace the model cannot play (an asynchronous
 schedule under a round scheduler): a line naming its file, "COULD NOT BE REPLAYED", after which the other
-traces are still replayed. A file that is not a trace is bad input (exit 2), refused before any replay.
+traces are still replayed. A file that is not a trace is bad input (exit 2), refused before any line is
+printed; so is, under its own model, a trace whose model is no longer valid or a round its own scheduler
+never plays (three robots under a scheduler of at most ``k = 2``).
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ from enum import StrEnum
 from pathlib import Path
 from typing import Any
 
-from ..errors import FatlineError
+from ..errors import FatlineError, ForbiddenRound
 from ..model.config import Model
 from ..model.seams import SEAMS
 from ..outputs import Kind, claim_dir, claim_files, write_text
@@ -122,17 +124,27 @@ def cmd_replay(args: argparse.Namespace) -> int:
     override = model_arg(args.model) if args.model is not None else None
     picture = claim_dir(args.picture, name="picture") if args.picture is not None else None
     docs = [(name, load_trace(name)) for name in args.traces]
-    if override is None:  # each trace replays under its own model: a model no longer valid is bad input
-        for name, doc in docs:
+    played: dict[int, Run | FatlineError] = {}
+    if override is None:  # each trace replays under its own model: a model no longer valid is bad input,
+        for k, (name, doc) in enumerate(docs):  # and so is a round its own scheduler never plays
             try:
                 trace_model(doc)
             except FatlineError as exc:
                 raise type(exc)(f"{name}: {exc}") from None
+            try:
+                played[k] = replay(doc)
+            except ForbiddenRound as exc:
+                raise ForbiddenRound(f"{name}: {exc}") from None
+            except FatlineError as exc:  # said in its line below, as under another model
+                played[k] = exc
     under = f" under {override.name}" if override is not None else ""
     counts: dict[str, int] = {}
-    for name, doc in docs:
+    for k, (name, doc) in enumerate(docs):
         try:
-            run = replay(doc, override)
+            done = played[k] if k in played else replay(doc, override)
+            if isinstance(done, FatlineError):
+                raise done
+            run = done
             diffs = differences(doc, run)
         except FatlineError as exc:
             emit([f"{name}: {NOT_PLAYED.upper()}{under}: {exc}"])

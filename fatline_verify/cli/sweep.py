@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 import re
+import shlex
 import time
 from typing import Any
 
@@ -43,13 +44,15 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     from ..check.checker import CheckPlan
     from ..check.workers import require_dask
     from ..locks import holding
+    from ..sweep.params import combinations, label, model_at, split_vary
     from ..sweep.run import CHECK_SHARE, WORK, Sweep, SweepBounds
     from ..sweep.space import Space, parse_vary
 
     model = model_arg(args.model)
     if args.q is not None:
         model = model.with_q(args.q)
-    vary = parse_vary(args.vary, model)
+    options_text, swept = split_vary(args.vary, model)
+    vary = () if options_text == "" else parse_vary(options_text, model)
     lemmas = parse_lemmas(args.lemma)
     robots = parse_robots(args.robots, error=InvalidInput) if args.robots is not None else DEFAULT_ROBOTS
     window = parse_window(args.window, error=InvalidInput) if args.window is not None else DEFAULT_WINDOW
@@ -63,16 +66,37 @@ def cmd_sweep(args: argparse.Namespace) -> int:
         require_dask(f"workers={args.workers}" if args.cluster is None else f"cluster={args.cluster!r}")
     root = claim_dir(args.out, name="out")
     distinct_outputs([Output("out", child(root, model.name), directory=True)], [("model", args.model)])
-    sweep = Sweep(
-        Space(model, vary),
-        SweepBounds(robots, window, args.engine, args.max_states, bound),
-        child(root, model.name),
-        lemmas,
-        max_memory,
-        0 if max_time is None else WORK,  # a run with a time limit keeps each step to minutes
-    )
-    with holding(sweep.out, name="out"):  # one run at a time per sweep: a second is refused, before any work
-        return _run(args, model.name, sweep, max_time)
+    combos = combinations(swept)
+    sweeps = []
+    for combo in combos:  # every combination's model and directory made (and checked) before any work
+        at = model_at(model, combo)
+        out = child(child(root, model.name), label(combo)) if combo else child(root, model.name)
+        bounds = SweepBounds(robots, window, args.engine, args.max_states, bound)
+        work = 0 if max_time is None else WORK  # a run with a time limit keeps each step to minutes
+        sweeps.append((combo, Sweep(Space(at, vary), bounds, out, lemmas, max_memory, work)))
+    deadline = None if max_time is None else time.monotonic() + max_time
+    codes = []
+    for combo, sweep in sweeps:
+        left = None if deadline is None else deadline - time.monotonic()
+        if left is not None and left <= 0:
+            emit([f"{label(combo)}: not started (--max-time {args.max_time} spent); the same command resumes"])
+            codes.append(EXIT_INCONCLUSIVE)
+            continue
+        if combo:
+            emit([f"{label(combo)}: {', '.join(f'{k}={v!r}' for k, v in combo.items())}"])
+        with holding(sweep.out, name="out"):  # one run at a time per sweep: a second is refused, before any work
+            codes.append(_run(args, model.name, sweep, left))
+        if codes[-1] == EXIT_INTERRUPTED:
+            return EXIT_INTERRUPTED
+    return worst_exit(codes)
+
+
+def worst_exit(codes: list[int]) -> int:
+    """The exit code of several sweeps (one per combination of parameter values): a refutation anywhere
+    (1), else anything open or INCONCLUSIVE (3), else every lemma holds within bounds (0)."""
+    if EXIT_FOUND in codes:
+        return EXIT_FOUND
+    return EXIT_INCONCLUSIVE if EXIT_INCONCLUSIVE in codes else EXIT_OK
 
 
 def _run(args: argparse.Namespace, name: str, sweep: Any, max_time: float | None) -> int:
@@ -166,12 +190,12 @@ def _duration_text(seconds: float) -> str:
 
 def _command(args: argparse.Namespace, name: str) -> str:
     """The command that resumes this sweep and rewrites its page (the settings that name the sweep)."""
-    parts = ["fatline sweep", args.model or name]
+    parts = ["fatline sweep", shlex.quote(str(args.model or name))]
     for flag in ("vary", "lemma", "robots", "window", "bound", "q", "max_states", "out"):
         value = getattr(args, flag)
         if value is not None and not (flag == "out" and str(value) == "sweeps"):
-            parts.append(f"--{flag.replace('_', '-')} {value}")
-    return " ".join(str(p) for p in parts)
+            parts.append(f"--{flag.replace('_', '-')} {shlex.quote(str(value))}")
+    return " ".join(parts)
 
 
 def parse_lemmas(text: str | None) -> tuple[Lemma, ...]:
@@ -203,7 +227,9 @@ def register(sub: Any) -> None:
     add_model_argument(p)
     p.add_argument(
         "--vary",
-        help="comma-separated options to vary (default: every option but the scheduler; the others as in the model)",
+        help="comma-separated options to vary (default: every option but the scheduler; the others as in the model), "
+        "and parameters the model's scheduler or rule set declares, as SEAM.NAME (scheduler.k; default: those that "
+        "declare their values): each combination of their values is a sweep of its own, in OUT/MODEL/SEAM.NAME-VALUE",
     )
     p.add_argument("--lemma", help="comma-separated lemmas to sweep (default: every lemma the checker decides)")
     p.add_argument(

@@ -22,7 +22,7 @@ from ..lemmas.properties import CHECKED
 from ..outputs import SLUG, NotReadable, read_regular
 from .numbers import MAX_DIGITS, Number, Point, format_number, normalize, parse_number
 from .options import Options, Scheduler, Visibility, is_repaired, options_from_mapping
-from .seams import Settings, Value, declared, filled, parse_table
+from .seams import SEAMS, Param, Settings, Value, declared, filled, parse_table, with_values
 
 MODELS_DIR = Path(__file__).parent.parent / "models"
 """Where the shipped model files live (``models/`` at the top of the repository links here)."""
@@ -240,6 +240,30 @@ def seam_owner(model: Model, seam: str, scheduler: str | None = None) -> Any:
     from ..schedulers.activation import round_scheduler
 
     return round_scheduler(name)
+
+
+def own_parameters(model: Model) -> dict[str, tuple[str, Param]]:
+    """The parameters of ``model``'s scheduler and rule set, by their model-file name (``scheduler.k``):
+    per name, what declares it (``"scheduler 'pairs'"``) and its :class:`~.seams.Param`."""
+    found: dict[str, tuple[str, Param]] = {}
+    for seam in SEAMS:
+        name = str(model.options.scheduler) if seam == "scheduler" else model.rules
+        what = f"scheduler {name!r}" if seam == "scheduler" else f"rule set {name!r}"
+        for key, param in declared(seam_owner(model, seam)).items():
+            found[f"{seam}.{key}"] = (what, param)
+    return found
+
+
+def with_parameters(model: Model, values: dict[str, Value]) -> Model:
+    """``model`` with some of its own parameters set (``{"rules.reach": 4}``, each checked against its
+    declaration: a one-line :class:`InvalidModel` otherwise)."""
+    owners = {seam: declared(seam_owner(model, seam)) for seam in SEAMS}
+    for name in values:
+        seam, _, key = name.partition(".")
+        if key not in owners.get(seam, {}):
+            known = ", ".join(own_parameters(model)) or "none"
+            raise InvalidModel(f"{name}={values[name]!r}: not a parameter of this model; expected one of {known}")
+    return replace(model, settings=with_values(model.settings, owners, values))
 
 
 IMPLIED = ("", "paper", "repaired")

@@ -19,11 +19,13 @@ declares them as ``RuleSet(..., parameters={...})`` and its decision function re
 
 (``rules = "toy-step"``, a string, names a rule set with its defaults, as before: TOML has no key
 that is both a string and a table.) An unknown key or a value of the wrong type is one line, before
-any work. ``fatline explain`` and ``fatline sweep`` do not see these parameters yet.
+any work. ``fatline explain`` lists them (``fatline explain scheduler.k``), ``fatline sweep --vary
+scheduler.k`` takes a model through the values they declare (:meth:`Param.swept`).
 """
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Any
 
@@ -34,6 +36,9 @@ Value = int | bool | str
 
 SEAMS = ("scheduler", "rules", "goal")
 """The seams whose registered objects may declare parameters, by their table's name."""
+
+MAX_SWEPT = 16
+"""The widest range of whole numbers a sweep takes a parameter through without declared values."""
 
 Settings = tuple[tuple[str, tuple[tuple[str, Value], ...]], ...]
 """A model's values, per seam, every declared parameter (defaults filled), in declaration order."""
@@ -48,12 +53,35 @@ class Param:
     doc: str
     minimum: int | None = None
     maximum: int | None = None
+    values: tuple[Value, ...] = ()
+    """The values ``fatline sweep`` takes it through (each a valid value; a model file may set any valid
+    one). Left empty: ``False`` and ``True`` for a flag, every whole number of a range of at most
+    :data:`MAX_SWEPT`, else the parameter is not swept unless it declares them."""
 
     def __post_init__(self) -> None:
         if not isinstance(self.default, int | str):  # bool is an int
             raise ValueError(f"Param default={self.default!r}: expected an int, a bool or a str")
-        if not isinstance(self.default, bool) and isinstance(self.default, int):
-            self.parse("default", self.default)
+        if not isinstance(self.values, tuple) or len(set(self.values)) != len(self.values):
+            raise ValueError(f"Param values={self.values!r}: expected a tuple of distinct values")
+        try:  # a declaration's mistake is the plug-in's (ValueError when it registers), not a model's
+            if not isinstance(self.default, bool) and isinstance(self.default, int):
+                self.parse("default", self.default)
+            for value in self.values:
+                self.parse("values", value)
+        except InvalidModel as exc:
+            raise ValueError(f"Param {exc}") from None
+
+    def swept(self) -> tuple[Value, ...]:
+        """The values a sweep takes this parameter through (:attr:`values`, or what its type and range
+        allow); ``()`` when it declares none and its range is open or wider than :data:`MAX_SWEPT`."""
+        if self.values:
+            return self.values
+        if isinstance(self.default, bool):
+            return (False, True)
+        lo, hi = self.minimum, self.maximum
+        if isinstance(self.default, int) and lo is not None and hi is not None and hi - lo < MAX_SWEPT:
+            return tuple(range(lo, hi + 1))
+        return ()
 
     def expected(self) -> str:
         """What a value must be, in words."""
@@ -80,12 +108,23 @@ class Param:
         return value  # type: ignore[return-value]
 
 
+KEY = re.compile(r"^[A-Za-z_][A-Za-z0-9_-]*$")
+"""A parameter's name: a bare TOML key without a dot (``SEAM.NAME`` names it on the command line)."""
+
+
 def declared(owner: Any) -> dict[str, Param]:
     """The parameters ``owner`` (a registered scheduler or rule set) declares; none when it has no
-    ``parameters`` (a plug-in written before parameters existed)."""
+    ``parameters`` (a plug-in written before parameters existed). A declaration that is not a dict of
+    names to :class:`Param` is a one-line ``ValueError`` (raised when the plug-in registers)."""
     found = getattr(owner, "parameters", None) or {}
-    if not isinstance(found, dict) or not all(isinstance(k, str) and isinstance(p, Param) for k, p in found.items()):
-        raise ValueError(f"{owner!r}: parameters must be a dict of name -> Param")
+    name = getattr(owner, "name", None) or getattr(owner, "kind", None) or type(owner).__name__
+    if not isinstance(found, dict):
+        raise ValueError(f"{name}: parameters={found!r}: expected a dict of name -> Param (fatline_verify.model.seams)")
+    for key, param in found.items():
+        if not isinstance(key, str) or not KEY.match(key):
+            raise ValueError(f"{name}: parameters key {key!r}: expected a name of letters, digits, '_' and '-'")
+        if not isinstance(param, Param):
+            raise ValueError(f"{name}: parameters[{key!r}]={param!r}: expected a Param (fatline_verify.model.seams)")
     return found
 
 
@@ -95,7 +134,8 @@ def parse_table(seam: str, what: str, params: dict[str, Param], raw: object) -> 
     if raw is None:
         raw = {}
     if not isinstance(raw, dict):
-        raise InvalidModel(f"{seam}={raw!r}: expected a table of the {what}'s parameters")
+        where = " (the scheduler itself is [options] scheduler)" if seam == "scheduler" else ""
+        raise InvalidModel(f"{seam}={raw!r}: expected a [{seam}] table of the parameters of the {what}{where}")
     for key, value in raw.items():
         if key not in params:
             known = f"expected one of {', '.join(params)}" if params else f"the {what} takes no parameters"
@@ -108,4 +148,29 @@ def filled(params: dict[str, Param], given: dict[str, Value]) -> dict[str, Value
     return {key: given.get(key, p.default) for key, p in params.items()}
 
 
-__all__ = ["SEAMS", "Param", "Settings", "Value", "declared", "filled", "parse_table"]
+def with_values(settings: Settings, owners: dict[str, dict[str, Param]], values: dict[str, Value]) -> Settings:
+    """``settings`` with the values ``{"scheduler.k": 3}`` set (each checked), every declared parameter
+    of the seams ``owners`` names (seam -> its owner's parameters) filled."""
+    given = {seam: dict(pairs) for seam, pairs in settings}
+    for name, value in values.items():
+        seam, key = name.split(".", 1)
+        given.setdefault(seam, {})[key] = owners[seam][key].parse(name, value)
+    out = []
+    for seam in SEAMS:
+        params = owners.get(seam, {})
+        if params:
+            out.append((seam, tuple(filled(params, given.get(seam, {})).items())))
+    return tuple(out)
+
+
+__all__ = [
+    "MAX_SWEPT",
+    "SEAMS",
+    "Param",
+    "Settings",
+    "Value",
+    "declared",
+    "filled",
+    "parse_table",
+    "with_values",
+]

@@ -8,7 +8,8 @@ from ..model.config import Model, model_to_mapping
 from ..model.numbers import format_number
 from ..outputs import Kind as OutputKind
 from ..text import plural
-from .reach import PROVED, Kind, ReachResult, State, alone, what_if_text
+from .reach import PROVED, Kind, State, alone, what_if_text
+from .search import ReachResult
 
 
 def _radii(model: Model, state: State) -> str:

@@ -58,6 +58,7 @@ from .against_pages import against_entries
 from .data import ModelReport
 from .pages import ASSETS, PROVER_LEMMAS, cross_model_html, cross_model_markdown, model_html, model_markdown
 from .pictures import frames
+from .places import Places
 
 PAGES = ("README.md", "index.html")
 
@@ -243,7 +244,8 @@ def build_report(
         if _refusal(model, child(proofs, model.name), slots, timeout) is None:
             here = child(proofs, model.name)
             ProofResults(model, here, here / "traces", slots=slots, timeout=timeout)  # digest, rows, evidence
-    earlier = _earlier(models, out, proofs)
+    places = Places.of(out, proofs)
+    earlier = _earlier(models, out, proofs, places)
     reports = []
     for model in models:
         if progress:
@@ -256,7 +258,7 @@ def build_report(
             progress(f"{model.name}: pictures")
         traces = _collect(model, out, check_data, prove_data, draw=True, proofs=child(proofs, model.name))
         against = against_entries(model, out, _write_page)
-        report = ModelReport(model, check_data, prove_data, traces, against)
+        report = ModelReport(model, check_data, prove_data, traces, against, places)
         _write_page(out / model.name / "README.md", model_markdown(report))
         _write_page(out / model.name / "index.html", model_html(report))
         reports.append(report)
@@ -268,11 +270,12 @@ def build_report(
     return everyone
 
 
-def _earlier(models: list[Model], out: Path, proofs: Path) -> list[ModelReport]:
+def _earlier(models: list[Model], out: Path, proofs: Path, places: Places | None = None) -> list[ModelReport]:
     """The models reported under ``out`` before and not recomputed now, from their cached results (each
     checked as the asked models' are: a cache or results file changed since it was written, or a verdict
     its evidence contradicts, is refused; one that cannot be read at all is left out of the matrix)."""
     asked = {m.name for m in models}
+    places = places or Places.of(out, proofs)
     found = []
     for cache in sorted(out.glob("*/check.json")):
         name = cache.parent.name
@@ -291,7 +294,7 @@ def _earlier(models: list[Model], out: Path, proofs: Path) -> list[ModelReport]:
             raise  # changed since it was written, or contradicted by its evidence: never shown
         except (FatlineError, KeyError, OSError):
             continue  # an unreadable earlier report is left as it is, not shown in the matrix
-        found.append(ModelReport(model, check_data, prove_data, traces))
+        found.append(ModelReport(model, check_data, prove_data, traces, places=places))
     return found
 
 

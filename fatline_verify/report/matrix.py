@@ -7,17 +7,20 @@ from __future__ import annotations
 
 import html
 import json
+import re
 from typing import Any
 
 from ..lemmas.properties import CHECKED
+from ..model.config import shipped_models
 from ..model.options import Scheduler
 from ..prove.basis import counts_text
 from ..text import READINGS_DOC
 from .data import ModelReport
 from .parts import (
-    DOCS_LINK,
+    NOT_CLAIMED,
     PROVER_LEMMAS,
     ROWS,
+    claims,
     html_page,
     lemma_summary,
     md_table,
@@ -29,6 +32,7 @@ from .parts import (
     worst_of,
     worst_text,
 )
+from .places import Places, explain
 
 
 def _matrix(reports: list[ModelReport]) -> tuple[list[str], list[list[str]]]:
@@ -40,14 +44,29 @@ def _matrix(reports: list[ModelReport]) -> tuple[list[str], list[list[str]]]:
     rows = []
     for r in reports:
         row = [r.model.name, readings_text(r)]
-        row += [worst_text(r.check["lemmas"], lemma.value) for lemma in CHECKED]
+        row += [
+            worst_text(r.check["lemmas"], lemma.value) if claims(r, lemma.value) else NOT_CLAIMED for lemma in CHECKED
+        ]
         row += [lemma_summary(r, lemma.value) for lemma in PROVER_LEMMAS]
         rows.append(row)
     return headers, rows
 
 
+def rule_sets(reports: list[ModelReport]) -> str:
+    """The rule sets of the matrix's models, named (the paper's as the paper's)."""
+    names = sorted({r.model.rules for r in reports})
+    words = [f"`{name}`" + (" (the paper's rules)" if name == "paper" else "") for name in names]
+    return ", ".join(words) or "none"
+
+
+def intro(reports: list[ModelReport]) -> str:
+    """The matrix's first sentence names the rule sets it holds; then what the cells mean."""
+    word = "rule set" if len({r.model.rules for r in reports}) == 1 else "rule sets"
+    return f"Which reading of which rule set breaks which lemma ({word}: {rule_sets(reports)}). {INTRO}"
+
+
 INTRO = (
-    "Which reading of the paper breaks which lemma. *check*: the bounded model checker at each model's bounds "
+    "*check*: the bounded model checker at each model's bounds "
     "(worst verdict over the robot counts, with the smallest swarm that shows it). "
     "*prove*: the lemma-level verdict from z3 obligations per decision case of the rules (a repaired model: per "
     "pair of leg classes): PROVED (for every swarm size) only when the forms that together imply the lemma are all "
@@ -59,18 +78,49 @@ INTRO = (
     "those rows are not all the forms that together imply it), safety rows' PROVED split into "
     "substantive, immediate (true by the rule's construction) and vacuous (the case never fires). "
     "HOLDS_WITHIN_BOUNDS reads *HOLDS within bounds* in the HTML matrix. "
-    "Every VIOLATED verdict has a counterexample trace in `traces/` that `fatline replay` reproduces."
+    "Every VIOLATED verdict has a counterexample trace in `traces/` that `fatline replay` reproduces. "
+    f"*{NOT_CLAIMED}*: a lemma the model's rule set does not claim (`RuleSet(lemmas=...)`), neither judged nor proved."
 )
+
+
+def _places(reports: list[ModelReport]) -> Places:
+    """Where the report was written (every model's report says the same)."""
+    return reports[0].places if reports else Places()
+
+
+def _all_shipped(reports: list[ModelReport]) -> bool:
+    """Whether every model of the matrix is a shipped one, named by its name (``fatline report`` with no
+    model writes them all again)."""
+    shipped = {p.stem for p in shipped_models()}
+    return all(r.model.name in shipped and r.model.ref == r.model.name for r in reports)
+
+
+def regenerate_text(reports: list[ModelReport]) -> str:
+    """How the cross-model pages are written again, as Markdown: every shipped model's command, or each
+    model's own command on its page (rows of models not asked for are kept)."""
+    places = _places(reports)
+    if reports and _all_shipped(reports):
+        return f"Regenerate everything: `{places.regenerate()}` (every shipped model).{places.where()}"
+    return "Regenerate a model's row: the command on its page (the other models' rows are kept)."
+
+
+def readings_text_line(reports: list[ModelReport], root: str = "") -> str:
+    """Where each reading's meaning is found, as Markdown: the catalogue where the report has one beside
+    it, else ``fatline explain``."""
+    link = _places(reports).readings(root)
+    if link is not None:
+        return f"What each reading (`option=reading`) means: [{READINGS_DOC}]({link})."
+    return f"What each reading (`option=reading`) and parameter means: `{explain()}` (every one there is)."
 
 
 def cross_model_markdown(reports: list[ModelReport]) -> str:
     headers, rows = _matrix(reports)
     rows = [[f"[{r[0]}]({r[0]}/README.md)", *r[1:]] for r in rows]
-    lines = ["# fatline-verify reports", "", INTRO, "", *md_table(headers, rows), ""]
+    lines = ["# fatline-verify reports", "", intro(reports), "", *md_table(headers, rows), ""]
     notes = _not_run_markdown(reports)
     lines += [*notes, ""] if notes else []
-    lines += [f"What each reading (`option=reading`) means: [{READINGS_DOC}]({DOCS_LINK}).", ""]
-    lines += ["Regenerate everything: `fatline report` (every shipped model).", ""]
+    lines += [readings_text_line(reports), ""]
+    lines += [regenerate_text(reports), ""]
     return "\n".join(lines)
 
 
@@ -94,8 +144,14 @@ ROWS_HTML = f'<span class="rows">{ROWS}:</span>'
 """Above a prover cell's counts: they count obligation rows, not the lemma."""
 
 
-def _check_cell(rows: list[dict[str, Any]], lemma: str) -> str:
-    worst = worst_of(rows, lemma)
+NOT_CLAIMED_HTML = f'<td class="notencoded" title="the rule set does not claim this lemma">{NOT_CLAIMED}</td>'
+"""A cell of a lemma the model's rule set does not claim."""
+
+
+def _check_cell(report: ModelReport, lemma: str) -> str:
+    if not claims(report, lemma):
+        return NOT_CLAIMED_HTML
+    worst = worst_of(report.check["lemmas"], lemma)
     if worst is None:
         return "<td></td>"
     verdict, robots = worst
@@ -108,6 +164,8 @@ LEMMA_CLASS = {"PROVED": "PROVED", "VIOLATED": "VIOLATED", "NOT PROVED": "INCONC
 
 
 def _prove_cell(report: ModelReport, lemma: str) -> str:
+    if not claims(report, lemma):
+        return NOT_CLAIMED_HTML
     v = model_lemma_verdicts(report).get(lemma)
     if v is None or not report.prove.get("obligations"):  # no prover run: no claim
         return "<td></td>"
@@ -142,7 +200,7 @@ def _matrix_html(reports: list[ModelReport]) -> str:
         name = html.escape(r.model.name)
         cells = [f'<td class="model"><a href="{name}/index.html">{name}</a></td>']
         cells.append(f'<td class="readings">{readings_html(r, "", sep="<br>")}</td>')
-        cells += [_check_cell(r.check["lemmas"], lemma.value) for lemma in CHECKED]
+        cells += [_check_cell(r, lemma.value) for lemma in CHECKED]
         not_run = _not_run(r)
         if not_run:
             title = html.escape(str(r.prove["not_encoded"]))
@@ -217,15 +275,22 @@ def _card(report: ModelReport, trace: dict[str, Any] | None, why: str) -> str:
         f'<div class="card" id="card-{name}"><h3>Model <a href="{name}/index.html">{name}</a></h3>'
         f"<p>Readings: {readings_html(report, '')}. Shown: {html.escape(why)}.</p>"
     )
-    return head + (viewer(trace, prefix=f"{report.model.name}/") if trace else "") + "</div>"
+    return head + (viewer(trace, prefix=f"{report.model.name}/", places=report.places) if trace else "") + "</div>"
+
+
+def markdown_html(text: str) -> str:
+    """One line of this module's Markdown as HTML: `code` and [text](link), the rest escaped."""
+    out = html.escape(text.replace("*", ""))
+    out = re.sub(r"\[([^\]]+)\]\(([^)]+)\)", r'<a href="\2">\1</a>', out)
+    return re.sub(r"`([^`]+)`", r"<code>\1</code>", out)
 
 
 def cross_model_html(reports: list[ModelReport]) -> str:
-    intro = html.escape(INTRO.replace("*", "").replace("`", ""))
-    docs = f'<p>What each reading means: <a href="{html.escape(DOCS_LINK)}">{html.escape(READINGS_DOC)}</a>.</p>'
+    head = html.escape(intro(reports).replace("*", "").replace("`", ""))
+    docs = f"<p>{markdown_html(readings_text_line(reports))}</p><p>{markdown_html(regenerate_text(reports))}</p>"
     cards = "\n".join(_card(r, t, why) for r, t, why in featured(reports))
     body = (
-        f"<h1>fatline-verify reports</h1><p>{intro}</p>{_matrix_html(reports)}{docs}"
+        f"<h1>fatline-verify reports</h1><p>{head}</p>{_matrix_html(reports)}{docs}"
         f"<h2>A counterexample per model</h2>{cards}"
     )
     return html_page("fatline-verify reports", body, "", wide=True)
@@ -240,4 +305,9 @@ __all__ = [
     "cross_model_html",
     "cross_model_markdown",
     "featured",
+    "intro",
+    "markdown_html",
+    "readings_text_line",
+    "regenerate_text",
+    "rule_sets",
 ]

@@ -13,14 +13,15 @@ import html
 import re
 
 from ..prove.coverage import NOT_ENCODED
+from ..prove.text import PROVE_ROBOTS_LEGEND, prove_row
+from ..rules import registry
 from ..schedulers.systems import system_for
-from ..text import PROVE_ROBOTS_LEGEND, plural, prove_row
+from ..text import plural
 from .against_pages import against_html, against_markdown
 from .data import ModelReport
-from .matrix import cross_model_html, cross_model_markdown, featured
+from .matrix import cross_model_html, cross_model_markdown, featured, markdown_html
 from .parts import (
     ASSETS,
-    DOCS_LINK,
     PROVER_LEMMAS,
     html_numbers,
     html_page,
@@ -31,6 +32,7 @@ from .parts import (
     trace_text,
     viewer,
 )
+from .places import explain
 
 LEMMA_HEAD = ["lemma", "verdict", "obligations", "why"]
 
@@ -110,6 +112,31 @@ def _search_head(report: ModelReport) -> list[str]:
     if not _fine(report):
         return SEARCH_HEAD
     return [*SEARCH_HEAD[:5], "off-lattice", *SEARCH_HEAD[5:]]
+
+
+def _rule_set(report: ModelReport) -> str:
+    """The model's rule set, named, with its own summary (Markdown)."""
+    rule_set = registry.of(report.model)
+    own = report.model.setting("rules")
+    values = f" ({', '.join(f'{k}={v}' for k, v in own.items())})" if own else ""
+    return f"Rule set `{rule_set.name}`{values}: {rule_set.summary.rstrip('.')}."
+
+
+def _readings_where(report: ModelReport) -> str:
+    """Where the readings' meanings are (Markdown): the catalogue, linked, where the report has one."""
+    link = report.places.readings("../")
+    if link is not None:
+        return f"[what the readings mean]({link})"
+    return f"what each means: `{explain(report.model)}`"
+
+
+def _regenerate(report: ModelReport) -> str:
+    """The command that writes this page again (Markdown), from where the report was made."""
+    places = report.places
+    return (
+        f"Regenerate: `{places.regenerate([report.model])}` (reuses the cached results while they are up to date; "
+        f"`--refresh` recomputes).{places.where([report.model])}"
+    )
 
 
 def _parameters(report: ModelReport) -> str:
@@ -202,11 +229,10 @@ def model_markdown(report: ModelReport) -> str:
         "",
         m.description,
         "",
-        f"Readings: {readings_text(report)} ([what the readings mean](../{DOCS_LINK})). "
+        f"{_rule_set(report)} Readings: {readings_text(report)} ({_readings_where(report)}). "
         f"Parameters: {_parameters(report)}.",
         "",
-        f"Regenerate: `fatline report models/{m.name}.toml` (reuses the cached results while they are up to date; "
-        "`--refresh` recomputes). [HTML version with a step-through viewer](index.html).",
+        f"{_regenerate(report)} [HTML version with a step-through viewer](index.html).",
         "",
         *_index_markdown(report),
         "## Bounded model checker",
@@ -244,7 +270,7 @@ def model_markdown(report: ModelReport) -> str:
             "",
             f"{t['source']}: {t['lemma']}, {t['what']} ({t['verdict']}): {trace_text(t)}.",
             "",
-            f"Replay: `fatline replay reports/traces/{t['name']}.json -v`",
+            f"Replay: `{report.places.replay(t['name'])}`",
             "",
         ]
         lines += [f"![frame {k + 1}]({f})" for k, f in enumerate(t["frames"])] + [""]
@@ -285,8 +311,9 @@ def model_html(report: ModelReport) -> str:
     b = m.bounds
     parts = [
         f"<h1>Model <code>{html.escape(m.name)}</code></h1><p>{html.escape(m.description)}</p>",
-        f"<p>Readings: {readings_html(report, '../')} (<a href='{html.escape('../' + DOCS_LINK)}'>what the readings "
-        "mean</a>). <a href='../index.html'>All models</a>.</p>",
+        f"<p>{markdown_html(_rule_set(report))} Readings: {readings_html(report, '../')} "
+        f"({markdown_html(_readings_where(report))}). <a href='../index.html'>All models</a>.</p>",
+        f"<p>{markdown_html(_regenerate(report))}</p>",
         _index_html(report),
         f"<h2>Bounded model checker</h2><p>Robots {b.robots[0]}..{b.robots[1]}, "
         f"window {b.window[0]}x{b.window[1]}.</p>",
@@ -303,7 +330,7 @@ def model_html(report: ModelReport) -> str:
         *([against_html(report.against)] if report.against else []),
         "<h2>Counterexamples</h2>",
     ]
-    parts += [viewer(t) for t in report.traces]
+    parts += [viewer(t, places=report.places) for t in report.traces]
     return html_page(f"fatline-verify: {m.name}", "\n".join(parts), "../")
 
 

@@ -17,8 +17,9 @@ from ..model.config import IMPLIED
 from ..model.options import CATALOGUE
 from ..prove.coverage import LemmaVerdict, lemma_verdicts
 from ..schedulers.activation import round_scheduler
-from ..text import READINGS_DOC, SHORT, NumberStyle, exact_text, violation_line
+from ..text import SHORT, NumberStyle, exact_text, violation_line
 from .data import ModelReport
+from .places import Places
 
 RANK = {"VIOLATED": 0, "INCONCLUSIVE": 1, "HOLDS_WITHIN_BOUNDS": 2, "PROVED": 3}
 PROVER_LEMMAS = PROVED_LEMMAS
@@ -77,9 +78,6 @@ table.matrix { width: 100%; font-size: 0.76em; }
 code { background: #f5f5f5; padding: 0 0.2em; }
 """
 
-DOCS_LINK = f"../{READINGS_DOC}"
-"""The readings catalogue, relative to the report root (``reports/`` sits beside ``docs/``)."""
-
 
 def worst_of(rows: list[dict[str, Any]], lemma: str) -> tuple[str, int] | None:
     """The worst verdict over robot counts and the smallest robot count that has it."""
@@ -118,6 +116,8 @@ ROWS = "obligation rows"
 def lemma_summary(report: ModelReport, lemma: str) -> str:
     """A matrix cell: the lemma-level verdict, then its obligation rows' counts (PROVED split by basis), each
     said for what it is: ``lemma NOT PROVED; obligation rows: 25 PROVED`` (25 rows PROVED, the lemma not)."""
+    if not claims(report, lemma):
+        return NOT_CLAIMED
     v = model_lemma_verdicts(report).get(lemma)
     if v is None or not report.prove.get("obligations"):  # no prover run (a scheduler it refuses): no claim
         return ""
@@ -130,8 +130,22 @@ def _own_rules(report: ModelReport) -> str | None:
 
 
 def readings_text(report: ModelReport) -> str:
-    diff = report.model.options.differences()
-    return ", ".join(f"{k}={v}" for k, v in diff.items()) or _own_rules(report) or "every default reading"
+    """The model's rule set where it is not the paper's, then the readings that differ from the defaults."""
+    diff = [f"{k}={v}" for k, v in report.model.options.differences().items()]
+    own = _own_rules(report)
+    return ", ".join([own, *diff] if own else diff) or "every default reading"
+
+
+def claims(report: ModelReport, lemma: str) -> bool:
+    """Whether the model's rule set claims ``lemma`` (``RuleSet(lemmas=...)``: a lemma it leaves out is
+    neither judged nor proved, and its cells read "not claimed", never blank)."""
+    from ..rules import registry
+
+    return any(claimed.value == lemma for claimed in registry.applies(report.model))
+
+
+NOT_CLAIMED = "not claimed"
+"""A cell of a lemma the model's rule set does not claim."""
 
 
 def meaning(name: str, value: str) -> str:
@@ -144,20 +158,27 @@ def meaning(name: str, value: str) -> str:
 
 
 def readings_html(report: ModelReport, root: str, sep: str = ", ") -> str:
-    """The model's readings, each linked to its entry in the catalogue, its meaning on hover."""
-    docs = html.escape(root + DOCS_LINK)
+    """The model's rule set where it is not the paper's, then its readings, each linked to its entry in
+    the catalogue where the report has one (:mod:`.places`; a plug-in scheduler's reading has none),
+    its meaning on hover."""
+    catalogue = report.places.readings(root)
+    docs = html.escape(catalogue or "")
     diff = report.model.options.differences()
     own = _own_rules(report)
-    if not diff and own:
-        return f"<code>{html.escape(own)}</code>"
-    if not diff:
-        return f'<a href="{docs}">every default reading</a>'
-    return sep.join(
-        f'<a href="{docs}#{html.escape(k)}" title="{html.escape(meaning(k, v))}">'
-        f'<code><span class="nowrap">{html.escape(k)}=</span><wbr>'
-        f'<span class="nowrap">{html.escape(v)}</span></code></a>'
-        for k, v in diff.items()
-    )
+    shown = [f"<code>{html.escape(own)}</code>"] if own else []
+    if not diff and not own:
+        return f'<a href="{docs}">every default reading</a>' if catalogue else "every default reading"
+    for k, v in diff.items():
+        code = (
+            f'<code><span class="nowrap">{html.escape(k)}=</span><wbr>'
+            f'<span class="nowrap">{html.escape(v)}</span></code>'
+        )
+        title = html.escape(meaning(k, v))
+        if catalogue is not None and v in CATALOGUE[k].readings:  # a plug-in scheduler's reading is not in it
+            shown.append(f'<a href="{docs}#{html.escape(k)}" title="{title}">{code}</a>')
+        else:
+            shown.append(f'<span title="{title}">{code}</span>')
+    return sep.join(shown)
 
 
 def html_numbers(render: Callable[[NumberStyle], str]) -> str:
@@ -193,8 +214,10 @@ def trace_text(t: dict[str, Any], style: NumberStyle = SHORT) -> str:
     return violation_line(v, style) if v else t["doc"]["outcome"]
 
 
-def viewer(t: dict[str, Any], prefix: str = "") -> str:
-    """A trace's step-through viewer: caption (numbers exact on hover), buttons, the pictures."""
+def viewer(t: dict[str, Any], prefix: str = "", places: Places | None = None) -> str:
+    """A trace's step-through viewer: caption (numbers exact on hover), buttons, the pictures, and the
+    command that replays it (:mod:`.places`: from where the report was made)."""
+    places = places or Places()
     frames = [prefix + f for f in t["frames"]]
     caption = html_numbers(lambda style: trace_text(t, style))
     return (
@@ -205,7 +228,7 @@ def viewer(t: dict[str, Any], prefix: str = "") -> str:
         '<button class="play">play</button> <span class="counter"></span>'
         f'<img alt="picture of the trace" src="{html.escape(frames[0])}">'
         f'<a href="{html.escape(prefix + t["path"])}">trace file</a> &middot; replay with '
-        f"<code>fatline replay reports/traces/{html.escape(t['name'])}.json -v</code></div>"
+        f"<code>{html.escape(places.replay(t['name']))}</code></div>"
     )
 
 
@@ -226,11 +249,12 @@ def html_page(title: str, body: str, root: str, wide: bool = False) -> str:
 __all__ = [
     "ASSETS",
     "CSS",
-    "DOCS_LINK",
+    "NOT_CLAIMED",
     "PROVER_LEMMAS",
     "RANK",
     "ROWS",
     "VIEWER_JS",
+    "claims",
     "html_numbers",
     "html_page",
     "lemma_summary",

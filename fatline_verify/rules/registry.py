@@ -21,7 +21,7 @@ from typing import Any
 
 from ..errors import InvalidModel
 from ..lemmas.properties import CHECKED, SAFETY, Lemma
-from ..model.seams import Param
+from ..model.seams import Param, declared
 
 Model = Any
 """A :class:`fatline_verify.model.config.Model` (not imported: the model package imports this one)."""
@@ -189,6 +189,7 @@ class RuleSet:
 
     def check_setting(self) -> None:
         """Refuse, in one line, a setting that names no lemma of the checker or prunes one that does not apply."""
+        declared(self)  # parameters a dict of names to Param, or one line
         if self.robots not in ("discs", "points"):
             raise ValueError(f"rule set {self.name!r}: robots={self.robots!r}: expected 'discs' or 'points'")
         if self.goal is not None and not isinstance(self.goal, str):

@@ -119,6 +119,11 @@ class Sweep:
         return self.out / "traces" / f"{lemma.value}-{k}.json"
 
     def fingerprint(self) -> str:
+        """What the saved sweep was computed from: the base model (its own parameters' values included),
+        the settings, and the sources of every plug-in that decides for it (as ``check`` and ``prove``
+        fingerprint theirs: a built-in model's is as it was)."""
+        from ..provenance import plugin_settings
+
         return fingerprint(
             self.space.base,
             "sweep",
@@ -126,6 +131,7 @@ class Sweep:
             bounds=self.bounds.as_json(),
             lemmas=[lemma.value for lemma in self.lemmas],
             version=VERSION,
+            **plugin_settings(self.space.base),
         )
 
     def resume(self) -> bool:

@@ -4,7 +4,7 @@
   configuration, under the scheduler it was found for.
 * **unsat**: each configuration of the core is replayed on its own: a shortest way to a line by any
   rounds of the family (a central planner's, which no oblivious table follows from all of them at once)
-  is played by :func:`fatline_verify.repair.reach.replay_witness` (under centralized, rounds of one mover),
+  is played by :func:`fatline_verify.repair.search.replay_witness` (under centralized, rounds of one mover),
   or none exists (the family is stuck there whatever it does, by an exhaustive search); whether
   a table exists for that configuration alone; and the core is solved again with a fresh encoding and
   another SAT solver (:func:`.encode.independent_check`).
@@ -16,7 +16,8 @@ from dataclasses import dataclass
 
 from ..model.config import Model
 from ..model.options import Scheduler
-from ..repair.reach import Family, State, replay_witness, way_to_line
+from ..repair.reach import Family, State
+from ..repair.search import replay_witness, way_to_line
 from .encode import SOLVERS, SynthResult, independent_check, synthesise
 from .replay import Replay, replay
 

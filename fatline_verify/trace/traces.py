@@ -23,7 +23,7 @@ from typing import Any
 
 import jsonschema
 
-from ..errors import FatlineError, InvalidInput, InvalidTrace, TraceDidNotReproduce, Unsupported
+from ..errors import FatlineError, ForbiddenRound, InvalidInput, InvalidTrace, TraceDidNotReproduce, Unsupported
 from ..goals import registry as goal_registry
 from ..lemmas import registry as lemma_registry
 from ..lemmas.properties import SAFETY, Lemma
@@ -108,9 +108,24 @@ def require_plugins(doc: dict[str, Any], where: str = "trace") -> None:
         if not known[kind](name):
             dist, version = entry["distribution"], entry["version"]
             package = f"{dist}=={version}" if version else dist
+            what = {"rules": "rule set"}.get(kind, kind)
             raise InvalidTrace(
-                f"{where}: {kind} {name!r} is a plug-in that is not installed; expected its package "
+                f"{where}: {what} {name!r} is a plug-in that is not installed; expected its package "
                 f"installed: pip install '{package}'"
+            )
+    recorded = {entry["kind"] for entry in doc.get("plugins", ())}
+    model = doc.get("model") or {}
+    rules = model.get("rules")
+    named = {
+        "rules": rules.get("name") if isinstance(rules, dict) else rules,
+        "scheduler": (model.get("options") or {}).get("scheduler"),
+    }
+    for kind, name in named.items():  # a trace written before traces named their plug-ins
+        if isinstance(name, str) and kind not in recorded and not known[kind](name):
+            what = {"rules": "rule set"}.get(kind, kind)
+            raise InvalidTrace(
+                f"{where}: {kind}={name!r}: unknown {what}; expected one of {', '.join(_installed(kind))} (a "
+                f"plug-in's {what}: install the package that registers it; this trace does not record which)"
             )
     focus = doc["violation"]["property"] if doc.get("violation") else None
     if focus is not None and focus not in {m.value for m in Lemma} and lemma_registry.find(focus) is None:
@@ -119,6 +134,15 @@ def require_plugins(doc: dict[str, Any], where: str = "trace") -> None:
             f"{where}: violation.property={focus!r}: unknown lemma; expected one of {', '.join(names)} "
             "(a plug-in's lemma: install its package)"
         )
+
+
+def _installed(kind: str) -> list[str]:
+    """The rule sets (``kind="rules"``) or schedulers there are here, plug-ins loaded."""
+    if kind == "rules":
+        return list(rules_registry.names())
+    from ..schedulers.activation import ROUND_SCHEDULERS
+
+    return [*ROUND_SCHEDULERS, Scheduler.ASYNC.value]
 
 
 def _scheduler_known(name: str) -> bool:
@@ -309,6 +333,9 @@ def replay(doc: dict[str, Any], model: Model | None = None) -> Run:
             system.check_action(state, action, k)
         except InvalidInput as exc:
             raise InvalidTrace(f"{where}: {exc}") from None
+        why = _forbidden(system, state, action)
+        if why is not None:
+            raise ForbiddenRound(f"{where}/active={list(action)}: round {k} {why}")
         last = system.play(state, action)
         steps.append(last)
         state = last.target
@@ -321,6 +348,22 @@ def replay(doc: dict[str, Any], model: Model | None = None) -> Run:
         return Run(model, initial, tuple(steps), Outcome.CYCLE if closes and clean else Outcome.ROUND_LIMIT, loop_start)
     outcome = outcome_after(state, last, model, system) or Outcome.ROUND_LIMIT
     return Run(model, initial, tuple(steps), outcome)
+
+
+def _forbidden(system: TransitionSystem, state: Any, action: Any) -> str | None:
+    """Why the model's round scheduler never plays ``action`` in ``state`` (its own words: "activates 3
+    robots; expected one or two under scheduler=pairs"), or ``None``: a set its ``forbids`` allows, or one
+    of the sets it offers there (``masks``: FSYNC activates the enabled robots, not every robot). ASYNC
+    events are checked as they are played."""
+    rounds = getattr(system, "rounds", None)
+    if rounds is None:
+        return None
+    n = len(state)
+    why: str | None = rounds.forbids(tuple(action), n)
+    if why is None:
+        return None
+    enabled, _ = system.successors(state)
+    return None if sum(1 << i for i in action) in rounds.masks(enabled, n) else why
 
 
 def loop_is_fair(run: Run) -> bool:

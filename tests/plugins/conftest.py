@@ -10,6 +10,8 @@ from typing import Any
 
 import pytest
 
+from tests.plugins.cli import SITE
+
 
 @pytest.fixture
 def install_site(monkeypatch: pytest.MonkeyPatch) -> Iterator[Callable[[Path], None]]:
@@ -42,3 +44,28 @@ def install_site(monkeypatch: pytest.MonkeyPatch) -> Iterator[Callable[[Path], N
         reg.update(before)
     for name in [m for m in sys.modules if m.split(".")[0] == "toy_fatline_plugin"]:
         del sys.modules[name]
+
+
+@pytest.fixture
+def installed(install_site: Callable[[Path], None]) -> None:
+    """The plug-in package installed for one test (no other test sees the toy rule set, lemma or
+    scheduler)."""
+    install_site(SITE)
+
+
+@pytest.fixture
+def toy(installed: None) -> Any:
+    """The toy rule set, found by its entry point."""
+    from fatline_verify.rules import registry
+
+    return registry.get("toy-step")
+
+
+@pytest.fixture
+def no_left(installed: None) -> object:
+    """The toy lemma, registered through its entry point."""
+    from fatline_verify.lemmas import registry as lemmas
+
+    found = lemmas.find("no-left")
+    assert found is not None
+    return found

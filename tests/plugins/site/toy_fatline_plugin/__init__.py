@@ -27,7 +27,7 @@ def decide(snapshot, model):
     return Decision("toy-stay", (0, 0), ((0, 0),), ())
 
 
-REACH = Param(3, "how many radii right a robot must be seen for a step", minimum=1)
+REACH = Param(3, "how many radii right a robot must be seen for a step", minimum=1, values=(3, 4))
 
 register(
     RuleSet(
