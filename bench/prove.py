@@ -5,8 +5,9 @@ python bench/prove.py --startup N
 python bench/prove.py --run MODEL [--jobs J] [--lemma L] [--fresh]
 
 The first form reads ``proofs/MODEL/results.json`` (written by ``fatline prove MODEL``) and the
-``.smt2`` files it names; prints per model the verdict counts, the median and maximum solver seconds,
-and the sizes of the written obligations (bytes, assertions).
+``.smt2`` files it names where they are there (they are not in git: a ``fatline prove`` run writes
+those it solves); prints per model the verdict counts, the median and maximum solver seconds, and the
+sizes of the written obligations (bytes, assertions; ``-`` without the files).
 
 ``--startup N``: what an obligation costs before its solver starts. N calls, one after another, each
 in its own process the way ``fatline prove`` runs an obligation (:func:`fatline_verify.fresh.run_fresh`),
@@ -14,7 +15,8 @@ each importing the prover and returning; prints the seconds per call.
 
 ``--run MODEL``: ``fatline prove MODEL`` into a temporary copy of ``--proofs`` (so every earlier
 counterexample is replayed first, as in this repository: the solver's own work is small and the
-start-up shows), one obligation at a time unless ``--jobs``; prints the wall clock per obligation,
+start-up shows; ``fatline prove --fresh``: every obligation solved, none answered from its row), one
+obligation at a time unless ``--jobs``; prints the wall clock per obligation,
 the solver seconds per obligation (the rows' ``seconds``) and the difference, the cost of running an
 obligation at all. ``--fresh``: into an empty directory instead (what a user gets: the shipped
 counterexample corpus, ``fatline_verify/prove/corpus.json``, is replayed first, no earlier run's).
@@ -76,6 +78,7 @@ def run(model: str, proofs: Path, jobs: int, lemma: str | None, fresh: bool = Fa
             "--jobs",
             str(jobs),
             "-q",
+            "--fresh",
         ]
         if lemma:
             argv += ["--lemma", lemma]

@@ -4,10 +4,10 @@ after the code that gave it changed.
 Two parts, kept apart because the caches key on them differently:
 
 - :func:`source_digest`: every Python source file of this package, and the shipped rule tables (JSON files
-  whose entries are a rule set's decisions; read once a process). The compiled
-  engine's kept answers (:mod:`fatline_verify.check.answers`) are named by it; the report's and the
-  prover's caches are not (they are keyed by ``CHECKER_VERSION`` and ``ENCODING_VERSION``, bumped by
-  hand, so the committed results of the built-in models keep their fingerprints).
+  whose entries are a rule set's decisions; read once a process). The compiled engine's kept answers
+  (:mod:`fatline_verify.check.answers`) are named by it; the report's check cache is not (it is keyed by
+  ``CHECKER_VERSION``, bumped by hand); the prover's rows are keyed by the sources of their own kind of
+  obligation only (:mod:`fatline_verify.prove.digests`).
 - :func:`plugin_digest`: the sources of every object that decides for the model and is not defined in
   this package: the rule set's ``decide`` and its liveness encoding (a callable, or the module of a
   ``"module:function"``), ``model.algorithm`` when set, every registered step lemma's checks, the
@@ -197,8 +197,8 @@ def model_digest(model: Any) -> str:
 
 def plugin_settings(model: Any) -> dict[str, str]:
     """The plug-ins' digest as a fingerprint setting (``{"plugins": digest}``), or nothing when no
-    plug-in decides for ``model``: the fingerprints of the built-in models stay byte for byte as they
-    were, keyed by their version numbers (this package's sources are not in them)."""
+    plug-in decides for ``model``: a built-in model's fingerprints are keyed by this package's own
+    sources where each cache reads them, not here."""
     digest = plugin_digest(model)
     return {"plugins": digest} if digest else {}
 

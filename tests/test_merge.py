@@ -65,7 +65,7 @@ def test_prove_one_lemma_keeps_the_other_lemmas_rows(tmp_path, monkeypatch, caps
     shutil.copytree(ROOT / "proofs" / "paper", out / "paper")
     before = _rows(out / "paper" / "results.json")
     monkeypatch.setattr(prover, "prove", _fake_prove(Verdict.INCONCLUSIVE))
-    code = main(["prove", "paper", "--lemma", "no-collision", "--out", str(out), "-q"])
+    code = main(["prove", "paper", "--lemma", "no-collision", "--out", str(out), "-q", "--fresh"])
     assert code == 3
     after = _rows(out / "paper" / "results.json")
     assert after.keys() == before.keys()  # none dropped
@@ -165,20 +165,20 @@ def test_report_one_model_keeps_the_matrix_and_the_corpus(tmp_path, monkeypatch,
     monkeypatch.setattr(prover, "prove", _fake_prove(Verdict.INCONCLUSIVE))  # any recomputation is visible
 
     model = load_model("paper-centralized")
-    current = prover.prove_fingerprint(model, prover.DEFAULT_SLOTS, prover.DEFAULT_TIMEOUT)
-    up_to_date = {k for k, r in _rows(proofs / model.name / "results.json").items() if r.get("fingerprint") == current}
+    store = ProofResults(model, proofs / model.name, proofs / model.name / "traces", slots=3, timeout=60.0)
+    current = {k: store.digest(t) for t in prover.tasks_for(model, prover.LEMMAS) if (k := prover.task_key(t))}
+    rows = _rows(proofs / model.name / "results.json")
+    up_to_date = {k for k, r in rows.items() if r.get("fingerprint") == current.get(k)}
     code = main(["report", "paper-centralized", "--out", str(out), "--proofs", str(proofs), "-q"])
     assert code == 0
     matrix = (out / "README.md").read_text()
     for m in shipped_models():
         assert f"[{m.stem}]({m.stem}/README.md)" in matrix  # every model keeps its row
-    # an up-to-date row is reused, never recomputed; a stale one (the encoding changed since the committed
+    # an up-to-date row is reused, never recomputed; a stale one (the code changed since the committed
     # proofs/ were made) is recomputed, which the fake prover shows
     after = _rows(proofs / model.name / "results.json")
     assert all(after[k]["reason"] != "fake" for k in up_to_date)
-    assert all(
-        r["reason"] == "fake" for k, r in after.items() if k not in up_to_date and r.get("fingerprint") == current
-    )
+    assert all(r["reason"] == "fake" for k, r in after.items() if k not in up_to_date and k in current)
     assert stray.exists()
     assert set(corpus_before) <= {p.name for p in (out / "traces").iterdir()}
     assert "kept from earlier runs in the matrix" in capsys.readouterr().out

@@ -19,6 +19,7 @@ from fatline_verify.lemmas.properties import Verdict
 from fatline_verify.model.config import load_model
 from fatline_verify.outputs import write_json
 from fatline_verify.prove import corpus as corpus_module
+from fatline_verify.prove.candidates import corpus_known
 from fatline_verify.prove.corpus import (
     CORPUS,
     CORPUS_PATH,
@@ -31,7 +32,7 @@ from fatline_verify.prove.corpus import (
     read_corpus,
     replays,
 )
-from fatline_verify.prove.prover import corpus_known, prove
+from fatline_verify.prove.prover import prove
 from fatline_verify.prove.search import prove_spec
 from fatline_verify.prove.smt.claims import Spec
 from fatline_verify.prove.tasks import NotEncodedModel, paper_part, row_key, task_key, tasks_for

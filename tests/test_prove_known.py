@@ -7,7 +7,7 @@ from pathlib import Path
 
 from fatline_verify.lemmas.properties import Verdict
 from fatline_verify.model.config import load_model
-from fatline_verify.prove.prover import (
+from fatline_verify.prove.candidates import (
     EARLIER,
     _known_all,
     _known_beside,

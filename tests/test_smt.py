@@ -276,30 +276,34 @@ def _cvc5_guarded(paths, seconds: float) -> dict[str, str]:
 
 @pytest.mark.slow  # about 490 files, a few of which cvc5 and z3 each take their whole budget on;
 # the default tier re-checks a sample of every model's (below)
-def test_cvc5_rechecks_every_proved_obligation_from_its_file():
-    """Every committed PROVED obligation is re-checked from the written files alone. One shown on its
+def test_cvc5_rechecks_every_proved_obligation_from_its_file(tmp_path):
+    """Every committed PROVED obligation, its file and certificate regenerated as its row recorded
+    (:func:`_regenerated`), is re-checked from the written files alone. One shown on its
     linearization: cvc5 confirms the linear certificate written beside it (``.linear.smt2``), and for
     a few the linearization of the obligation's file alone ends unsat again. Any other: cvc5 for 10 s
     (guarded: it does not always keep its own limit), then a fresh z3 for 30 s. Neither may say sat;
     what neither confirms within those budgets must be fewer than 1 in 20 (the closing note of the
     change that brings one in names it: z3 proved it in the prover's own run)."""
     pytest.importorskip("cvc5")
-    rows = _proved_rows(with_reason=True)
+    rows = _proved_rows(tmp_path, with_reason=True)
     assert rows
+    _regenerated(rows)
     _recheck_from_files(rows, lambda linear: linear[:: max(1, len(linear) // 3)][:3])
 
 
-def test_cvc5_rechecks_a_sample_of_every_models_proved_obligations_from_their_files():
+def test_cvc5_rechecks_a_sample_of_every_models_proved_obligations_from_their_files(tmp_path):
     """The fast representative of the above, on the same terms: of every model's committed PROVED
     obligations, the first shown on its linearization and the first shown otherwise (in the order of
-    its ``results.json``); the first linearization also re-done from its file alone."""
+    its ``results.json``), each regenerated as its row recorded; the first linearization also re-done
+    from its file alone."""
     pytest.importorskip("cvc5")
     rows, seen = [], set()
-    for row in _proved_rows(with_reason=True):
+    for row in _proved_rows(tmp_path, with_reason=True):
         kind = (row[1], "linearization" in row[2])
         if kind not in seen:
             seen.add(kind)
             rows.append(row)
+    _regenerated(rows)
     proofs = Path(__file__).resolve().parent.parent / "proofs"
     assert {model for _, model, _ in rows} == {path.parent.name for path in proofs.glob("*/results.json")}
     _recheck_from_files(rows, lambda linear: linear[:1])
@@ -342,17 +346,52 @@ def _linear_recheck(path: Path) -> str:
         return _cvc5_guarded([linear], 30.0)[str(linear)]
 
 
-def _proved_rows(with_reason: bool = False):
-    """Every committed PROVED obligation with a file: (path, model name, obligation key), or with
-    ``with_reason`` (path, model name, reason)."""
+def _proved_rows(where: Path, with_reason: bool = False):
+    """Every committed PROVED obligation with a file: (where its file is regenerated, under
+    ``where/MODEL``; model name; obligation key), or with ``with_reason`` (path, model name, reason)."""
+    from fatline_verify.prove.emit import obligation_path
+
     root = Path(__file__).resolve().parent.parent
     out = []
     for results in sorted((root / "proofs").glob("*/results.json")):
+        tasks = {t.key: t for t in tasks_for(load_model(results.parent.name), two_movers=True)}
         for row in json.loads(results.read_text())["obligations"]:
-            if row["verdict"] == "PROVED" and row.get("smt2") and row["form"] != "global":
+            if row["verdict"] == "PROVED" and row.get("smt2_sha256") and row["form"] != "global":
                 key = f"{row['lemma']}/{row['form']}-{row['case']}" + (f".and.{row['other']}" if row["other"] else "")
-                out.append((root / row["smt2"], results.parent.name, row["reason"] if with_reason else key))
+                path = where / results.parent.name / obligation_path(tasks[key])
+                out.append((path, results.parent.name, row["reason"] if with_reason else key))
     return out
+
+
+def _regenerated(rows) -> None:
+    """The obligation files of ``rows`` (:func:`_proved_rows`) written from the code, each with the digest
+    its committed row recorded, and the certificates of those shown on their linearization regenerated
+    (solved again: :func:`fatline_verify.prove.regenerate.regenerate`) byte for byte as recorded."""
+    from dataclasses import replace
+
+    from fatline_verify.prove.digests import text_sha256
+    from fatline_verify.prove.emit import obligation_path, obligation_text
+    from fatline_verify.prove.regenerate import regenerate, wanted
+
+    proofs = Path(__file__).resolve().parent.parent / "proofs"
+    missing = []
+    for name in dict.fromkeys(model for _, model, _ in rows):
+        model = load_model(name)
+        tasks = {obligation_path(t): t for t in tasks_for(model, two_movers=True)}
+        recorded = {w.key: w for w in wanted(proofs / name / "results.json")}
+        for path, _, _ in (row for row in rows if row[1] == name):
+            task = tasks[path.relative_to(path.parent.parent).as_posix()]
+            got = obligation_text(model, task, slots=3)
+            assert got is not None
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(got[1])
+            w = recorded.get(task.key)
+            if w is not None:
+                assert text_sha256(got[1]) == w.smt2_sha256, path
+                missing.append(replace(w, obligation=path, certificate=path.with_suffix(".linear.smt2")))
+    failures: list[str] = []
+    regenerate(missing, 2, lambda path, why: failures.append(f"{path}: {why}"))
+    assert not failures, failures
 
 
 @pytest.mark.parametrize(

@@ -71,6 +71,8 @@ def cmd_prove(args: argparse.Namespace) -> int:
     from ..prove.tasks import CoverageSpec, ViewsSpec
 
     model = model_arg(args.model)
+    if args.emit is not None:
+        return _emit(args, model)
     if args.lemma == LIVENESS:
         lemmas: tuple[Lemma, ...] = (Lemma.PROGRESS, Lemma.TERMINATION)
     else:
@@ -104,7 +106,11 @@ def cmd_prove(args: argparse.Namespace) -> int:
     store = ProofResults(model, out, traces_dir, slots=args.slots, timeout=args.timeout)
     if args.redo_inconclusive:
         tasks = [t for t in tasks if store.verdict(t) in (None, "INCONCLUSIVE")]
-    claim_files(store.witness_paths(tasks), name="traces", kind=Kind.TRACE, force=args.force)
+    everything = args.fresh or args.redo_inconclusive or args.no_corpus or bool(args.known)
+    todo = tasks if everything else [t for t in tasks if store.fresh(t) is None]  # a current row is not solved again
+    for task in tasks:
+        store.digest(task)  # each row records the fingerprint of the task asked for (--coverage's sample)
+    claim_files(store.witness_paths(todo), name="traces", kind=Kind.TRACE, force=args.force)
 
     interrupted = False
     running: dict[str, float] = {}
@@ -119,7 +125,7 @@ def cmd_prove(args: argparse.Namespace) -> int:
     with Progress(enabled=not args.quiet, unit="obligations") as bar:
         # No rate or ETA: one obligation takes a tenth of a second, the next a minute; the seconds spent
         # on each one running say whether the run is moving.
-        bar.stage(f"{model.name}: proving", total=len(tasks), eta=False, live=lambda: running_note(running))
+        bar.stage(f"{model.name}: proving", total=len(todo), eta=False, live=lambda: running_note(running))
         try:
             prove(
                 model,
@@ -127,7 +133,7 @@ def cmd_prove(args: argparse.Namespace) -> int:
                 timeout=args.timeout,
                 out=out,
                 jobs=args.jobs,
-                tasks=tasks,
+                tasks=todo,
                 on_result=store.add,
                 progress=finished,
                 traces=traces_dir,
@@ -139,8 +145,8 @@ def cmd_prove(args: argparse.Namespace) -> int:
             )
         except KeyboardInterrupt:
             interrupted = True
-    keys = [task_key(t) for t in tasks if store.fresh(t) is not None]
-    rows = store.ordered(keys)
+    keys = [task_key(t) for t in tasks if task_key(t) in store.rows]
+    rows = store.shown(keys)  # a row this run did not make current (interrupted) reads STALE
     lines = prove_lines(model, rows, out, verbose=args.verbose)
     if not interrupted:  # every trace given is used by a row, or said not to be
         lines += [line for k in known if (line := unused_line(k, tasks, rows))]
@@ -157,6 +163,37 @@ def cmd_prove(args: argparse.Namespace) -> int:
     if any(r["verdict"] == "VIOLATED" for r in rows):
         return EXIT_FOUND
     return EXIT_INCONCLUSIVE if any(r["verdict"] == "INCONCLUSIVE" for r in rows) else EXIT_OK
+
+
+def _emit(args: argparse.Namespace, model: Any) -> int:
+    """``--emit DIR``: every obligation's SMT-LIB2 under ``DIR/MODEL``, checked against its row's digest
+    (exit 0: every one matches; 1: one differs or its row has no digest or no row)."""
+    from ..errors import InvalidInput
+    from ..prove.emit import MATCH, emit_lines, is_obligation, obligation_path
+    from ..prove.emit import emit as emit_obligations
+    from ..prove.prover import LEMMAS, tasks_for
+    from ..prove.results import ProofResults
+
+    if args.lemma == LIVENESS:
+        lemmas: tuple[Lemma, ...] = (Lemma.PROGRESS, Lemma.TERMINATION)
+    else:
+        lemmas = LEMMAS if args.lemma == ALL else (Lemma(args.lemma),)
+    tasks = tasks_for(model, lemmas, two_movers=args.two_movers)
+    target = claim_dir(child(claim_dir(args.emit, name="emit"), model.name), name="emit")
+    results = child(claim_dir(args.out, name="out"), model.name)
+    if target.resolve() == results.resolve():
+        raise InvalidInput(f"emit={args.emit!r}: is --out; expected another directory (the rows stay as they are)")
+    for task in tasks:  # nothing overwritten that is not an obligation file, before any work
+        path = target / obligation_path(task)
+        if path.exists() and not args.force and not (path.is_file() and is_obligation(path)):
+            raise InvalidInput(
+                f"emit={path.as_posix()!r}: exists and is not an SMT-LIB2 obligation; expected it moved away "
+                "(or --force to overwrite it)"
+            )
+    store = ProofResults(model, results, results / "traces", slots=args.slots, timeout=args.timeout)
+    done = emit_obligations(model, tasks, store.rows, target, slots=args.slots)
+    emit(emit_lines(done, target))
+    return EXIT_OK if all(e.status == MATCH for e in done) else EXIT_FOUND
 
 
 def running_note(running: dict[str, float], shown: int = 2) -> str:
@@ -245,10 +282,25 @@ def register(sub: Any) -> None:
         help="also the two-mover obligations (a pair of rules each, lattice searches only)",
     )
     p.add_argument(
+        "--fresh",
+        action="store_true",
+        help="solve every obligation asked for (by default one whose row in OUT/MODEL/results.json is current, its "
+        "fingerprint that of the code, model, settings and solver of this run, is shown as it is, not solved again; "
+        "--known, --no-corpus and --redo-inconclusive solve what they ask for afresh too)",
+    )
+    p.add_argument(
+        "--emit",
+        metavar="DIR",
+        type=nonempty("emit", "a directory for the SMT-LIB2 obligations"),
+        help="instead of proving: write every obligation asked for (--lemma, --two-movers) as SMT-LIB2 under "
+        "DIR/MODEL, regenerated from the code, and check each against the digest its row in OUT/MODEL/results.json "
+        "recorded (exit 1 if one differs or has none); nothing is solved",
+    )
+    p.add_argument(
         "--redo-inconclusive",
         action="store_true",
-        help="only the obligations whose row in OUT/MODEL/results.json is INCONCLUSIVE or missing; every other "
-        "row is kept as it is (its fingerprint still says which settings and encoding produced it)",
+        help="only the obligations whose row in OUT/MODEL/results.json is INCONCLUSIVE or missing, each solved again "
+        "even if current; every other row is kept as it is (shown STALE if its fingerprint is not current)",
     )
     p.add_argument(
         "--known",

@@ -1,10 +1,14 @@
-"""``python -m fatline_verify.prove.certify [--jobs N] [DIR...]`` (``--help``: the usage): check every linear
-certificate (``*.linear.smt2``) under the directories (default ``proofs``) against the obligation file beside it,
-from the two files alone (:mod:`fatline_verify.prove.smt.certificates`): the relaxed part is the
-obligation, every cut is implied by the atom its Boolean stands for, and cvc5 finds the linear problem
-unsat. Prints one line per certificate that fails and a count, and on stderr a progress line every 10
-seconds; ``--jobs N`` checks N certificates at once (each check is independent). Exit 0 if every one
-passed, 1 if one failed, 2 for a bad argument (a directory that does not exist, a bad ``--jobs``),
+"""``python -m fatline_verify.prove.certify [--jobs N] [DIR...]`` (``--help``: the usage).
+
+First every linear certificate a ``results.json`` under the directories (default ``proofs``) records:
+one that is missing is regenerated (:mod:`fatline_verify.prove.regenerate`: its obligation solved
+again, both files held to the row's digests), one that is there is held to its row's digest. Then every
+linear certificate (``*.linear.smt2``) under the directories is checked against the obligation file
+beside it, from the two files alone (:mod:`fatline_verify.prove.smt.certificates`): the relaxed part is
+the obligation, every cut is implied by the atom its Boolean stands for, and cvc5 finds the linear
+problem unsat. Prints one line per certificate that fails and a count, and on stderr a progress line
+every 10 seconds; ``--jobs N`` checks (and solves) N at once (each is independent). Exit 0 if every
+one passed, 1 if one failed, 2 for a bad argument (a directory that does not exist, a bad ``--jobs``),
 before any work."""
 
 from __future__ import annotations
@@ -45,14 +49,16 @@ class _Parser(argparse.ArgumentParser):
         raise _BadArgument(message)
 
 
-DESCRIPTION = """Check every linear certificate (*.linear.smt2) under the directories against the obligation
+DESCRIPTION = """Regenerate the linear certificates the results.json files under the directories record and
+that are missing (each obligation solved again; both files must match the digests its row recorded),
+then check every linear certificate (*.linear.smt2) under the directories against the obligation
 file beside it, from the two files alone: the relaxed part is the obligation, every cut is implied
 by the atom its Boolean stands for, and cvc5 finds the linear problem unsat. Prints one line per
 certificate that fails, then a count; on stderr a progress line every 10 s."""
 
 EPILOG = """exit codes:
-  0    every certificate checks from its own files
-  1    a certificate failed (a line FAILED PATH: why for each)
+  0    every certificate checks from its own files (and every one the rows record is there, as recorded)
+  1    a certificate failed, or is not as its row recorded (a line FAILED PATH: why for each)
   2    a bad argument (a directory that does not exist, a bad --jobs), before any work
 """
 
@@ -85,8 +91,9 @@ def main(argv: list[str] | None = None) -> int:
     for d in dirs:
         if not d.is_dir():
             return _usage(f"{d.as_posix()}: no such directory; expected a directory of proofs")
-    files = sorted(p for d in dirs for p in d.rglob("*.linear.smt2"))
+    unmatched = _regenerated(dirs, jobs)
     failed, done, start, last = 0, 0, time.monotonic(), time.monotonic()
+    files = sorted(p for d in dirs for p in d.rglob("*.linear.smt2"))
     with ProcessPoolExecutor(jobs) if jobs > 1 else _Inline() as pool:
         for where, ok, why in pool.map(_check, files):
             done += 1
@@ -101,7 +108,33 @@ def main(argv: list[str] | None = None) -> int:
                     flush=True,
                 )
     print(f"{len(files) - failed} of {len(files)} certificates check from their own files (atoms, cuts, cvc5)")
-    return 1 if failed else 0
+    return 1 if failed or unmatched else 0
+
+
+def _regenerated(dirs: list[Path], jobs: int) -> int:
+    """Every certificate the rows under ``dirs`` record: one that is there held to its row's digest, one
+    that is missing regenerated (:func:`fatline_verify.prove.regenerate.regenerate`). Prints a line per
+    failure (and returns how many); on stderr how many were regenerated."""
+    from .digests import file_sha256
+    from .regenerate import regenerate, wanted
+
+    failures = 0
+
+    def failed(path: Path, why: str) -> None:
+        nonlocal failures
+        failures += 1
+        print(f"FAILED {path.as_posix()}: {why}", flush=True)
+
+    rows = [w for d in dirs for results in sorted(d.rglob("results.json")) for w in wanted(results)]
+    missing = [w for w in rows if not w.certificate.exists()]
+    for w in rows:
+        if w not in missing and file_sha256(w.certificate) != w.certificate_sha256:
+            failed(w.certificate, f"not the certificate its row recorded ({w.key}): regenerate it (move it away)")
+    if missing:
+        print(f"certify: regenerating {len(missing)} certificates (each obligation solved again)", file=sys.stderr)
+        placed = regenerate(missing, jobs, failed)
+        print(f"certify: {placed} of {len(missing)} regenerated byte for byte", file=sys.stderr, flush=True)
+    return failures
 
 
 class _Inline:

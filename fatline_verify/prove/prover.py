@@ -18,10 +18,8 @@ header. Each obligation runs in a fresh process (:mod:`fatline_verify.fresh`). T
 from __future__ import annotations
 
 import os
-import re
 import time
 from collections.abc import Callable, Mapping, Sequence
-from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
@@ -33,8 +31,9 @@ from ..schedulers.activation import scheduler_for
 from ..schedulers.round import play_round
 from ..trace.simulate import Outcome, Run
 from ..trace.traces import replayed_document
+from .candidates import _known_all, corpus_known, witness_path
 from .deadlock import Deadlock
-from .replay import Known, Replayed, replay, replay_known
+from .replay import Replayed, replay, replay_known
 from .search import MIN_CHECK, Budget, Given, prove_spec, rounds, rounds_text
 from .smt import obligations as ob
 from .smt.claims import (
@@ -56,7 +55,6 @@ from .tasks import (
     ViewsSpec,
     check_encoded,
     paper_part,
-    row_key,
     task_key,
     tasks_for,
 )
@@ -291,193 +289,10 @@ def overrun_result(task: Task, seconds: float, timeout: float, out: Path | None)
     )
 
 
-def witness_path(model: Model, directory: Path, key: str) -> Path:
-    """``DIRECTORY/MODEL-prove-LEMMA-FORM-RULE.json`` for the obligation ``key``."""
-    from ..outputs import child
-
-    lemma, rest = key.split("/", 1)
-    return child(directory, f"{model.name}-prove-{lemma}-{rest}", ".json")
-
-
-def _known_all(
-    model: Model,
-    key: str,
-    traces: Path | None,
-    out: Path | None,
-    earlier: Mapping[str, dict[str, Any]] | None,
-) -> list[Known]:
-    """Every counterexample known for the obligation ``key`` before its search, in the order they are
-    replayed: its own from an earlier run, the same obligation's under the models proved beside this
-    one, then the same for its mirror image (:func:`mirror_key`), reflected in the x-axis. Each is only
-    a candidate: :func:`replay_known` keeps it only if, under this model, its r decides this case and
-    breaks this claim."""
-    own = _known(model, key, traces) or _known_configuration(key, earlier)
-    found = ([(EARLIER, own)] if own else []) + _known_beside(key, out)
-    mirror = mirror_key(key)
-    if mirror is not None:
-        theirs = _known(model, mirror, traces) or _known_configuration(mirror, earlier)
-        mirrored = ([(EARLIER, theirs)] if theirs else []) + _known_beside(mirror, out)
-        _, case = mirror.split("/", 1)
-        found += [(f"the mirror image (y to -y) of {where} for {case}", reflect(doc)) for where, doc in mirrored]
-    return found
-
-
-def corpus_known(model: Model, key: str) -> list[Known]:
-    """The shipped corpus's candidates for the obligation ``key`` (:func:`fatline_verify.prove.corpus.known_for`),
-    then its mirror obligation's (:func:`mirror_key`), reflected in the x-axis, as for an earlier run's."""
-    from .corpus import known_for
-
-    found = known_for(model, key)
-    mirror = mirror_key(key)
-    if mirror is not None:
-        _, case = mirror.split("/", 1)
-        found += [
-            (f"the mirror image (y to -y) of {where} for {case}", reflect(doc))
-            for where, doc in known_for(model, mirror)
-        ]
-    return found
-
-
-_MIRROR = {"scenario-2": "scenario-3", "scenario-3": "scenario-2", "up": "down", "down": "up"}
-
-
-def mirror_key(key: str) -> str | None:
-    """The obligation whose case is ``key``'s reflected in the x-axis: Scenario 2 ("R∩B is non-empty
-    ... moves upwards") and Scenario 3 (R∩D, downwards) trade places, and so do their search's up and
-    down candidates; ``None`` for a case of another rule (Scenario 1 moves right, Scenario 4 towards
-    −Y: neither has a mirror among the rules)."""
-    lemma, rest = key.split("/", 1)
-    if ("scenario-2" not in rest and "scenario-3" not in rest) or "scenario-4" in rest or "scenario-1" in rest:
-        return None
-    return f"{lemma}/" + re.sub(r"scenario-[23]|\bup\b|\bdown\b", lambda m: _MIRROR[m.group(0)], rest)
-
-
-def reflect(doc: dict[str, Any]) -> dict[str, Any]:
-    """A counterexample reflected in the x-axis: the initial positions (a trace) or the configuration
-    (a results row) with y negated; everything else as it was (the replay recomputes the rest)."""
-
-    def neg(v: Any) -> str:
-        return str(-Fraction(str(v)))
-
-    if "configuration" in doc:
-        flipped = []
-        for point in doc["configuration"]:
-            x, _, y = str(point).partition(",")
-            flipped.append(f"{x},{neg(y)}" if y else str(point))
-        return {"configuration": flipped, **({"focus": doc["focus"]} if "focus" in doc else {})}
-    out = dict(doc)
-    if isinstance(doc.get("initial"), list):
-        out["initial"] = [[p[0], neg(p[1])] if isinstance(p, list) and len(p) == 2 else p for p in doc["initial"]]
-    return out
-
-
-def _known(model: Model, key: str, traces: Path | None) -> dict[str, Any] | None:
-    """The counterexample an earlier run wrote for the obligation ``key`` under ``traces``, if any."""
-    from ..outputs import Kind, is_output, read_json
-
-    if traces is None:
-        return None
-    path = witness_path(model, traces, key)
-    return read_json(path) if path.is_file() and is_output(path, Kind.TRACE) else None
-
-
-def _known_beside(key: str, out: Path | None) -> list[Known]:
-    """The same obligation's counterexamples under the other models proved beside this one
-    (``OUT/../OTHER``: its trace, or for a claim without a trace its results row's configuration), in
-    name order. A reading that does not bear on the case leaves such a counterexample one here too;
-    the replay (:func:`replay_known`) decides, under this model, that its r decides the same case,
-    breaks the same claim and starts from an initial configuration."""
-    from ..outputs import Kind, is_output, read_json
-
-    if out is None or not out.parent.is_dir():
-        return []
-    lemma, rest = key.split("/", 1)
-    found: list[Known] = []
-    for results in sorted(out.parent.glob("*/results.json")):
-        other = results.parent
-        if other.resolve() == out.resolve() or not is_output(results, Kind.PROVE):
-            continue
-        where = f"a counterexample found under model {other.name}"
-        path = other / "traces" / f"{other.name}-prove-{lemma}-{rest}.json"
-        if path.is_file() and is_output(path, Kind.TRACE):
-            doc = read_json(path)
-            if doc is not None:
-                found.append((where, doc))
-                continue
-        rows = read_json(results) or {}
-        by_key = {row_key(row): row for row in rows.get("obligations", []) if isinstance(row, dict)}
-        configuration = _known_configuration(key, by_key)
-        if configuration is not None:
-            found.append((where, configuration))
-    return found
-
-
-def _known_configuration(key: str, earlier: Mapping[str, dict[str, Any]] | None) -> dict[str, Any] | None:
-    """The configuration an earlier run replayed as a counterexample of the obligation ``key`` (a
-    claim without a trace), from its results row, if any."""
-    row = (earlier or {}).get(key)
-    if row is None or row.get("verdict") != "VIOLATED" or not row.get("configuration"):
-        return None
-    return {"configuration": list(row["configuration"])}
-
-
-EARLIER = "an earlier run's counterexample"
-"""Where an obligation's own counterexample from an earlier run comes from, as its reason says."""
-
-
-def prove_fingerprint(model: Model, slots: int, timeout: float) -> str:
-    """What a prover result depends on: the model, the settings, the encoding's version and the
-    sources of the plug-ins that decide for the model (:func:`fatline_verify.provenance.plugin_settings`,
-    e.g. a plug-in rule set's liveness encoding). This package's own sources are not in it (a change
-    of an obligation bumps ``ENCODING_VERSION``), so a built-in model's rows keep their fingerprints."""
-    from ..cache import fingerprint
-    from ..provenance import plugin_settings
-
-    settings = {"slots": slots, "timeout": timeout, "encoding": ENCODING_VERSION, **plugin_settings(model)}
-    return fingerprint(model, "prove", **settings)
-
-
-ENCODING_VERSION = 11
-"""Bumped whenever an obligation's search or meaning changes (part of the cache fingerprint). 3:
-role-assigned obligations per decision case; 4: lattices q = 1, 2, 4 with their own shares, an
-initial search over the reals after a non-initial solution, fsync replays activate every robot;
-5: rounds of growing budget, lattices q = 1, 2, 4, 8, 20, an irrational answer searched past;
-6: an obligation's checks end within its budget (blocked retries share their lattice's share), and
-vacuity is asked in every round until answered (the repaired rule set's leg obligations were added
-under 6: new obligations, no existing one changed); 7: budgets are spent by z3's resource count, not
-the wall clock, so verdicts and reasons are the same on every run where the clock stops no check
-(a reason says when it did); 8: the linear relaxation of the vacuity question and of the obligation
-is asked first (an unsat one decides; the header says so), and what vacuity and the lattices leave
-of their shares in a round goes to the reals in that round; 9: the linearization (exact cuts of every
-squared distance, refined where a solution breaks them, a solution polished over the reals) replaces
-the one relaxation of the obligation, with a share of its own taken from the lattices'; 10: a point
-the linearization wrongly puts outside a disc gets local sector cuts (the whole cover was rebuilt on
-a finer grid: most of the time went to Python, not z3), its budget counted at 3 times the nonlinear
-rate (was 4), a polish repeated at most 3 times per set of free unknowns, and a check's clock limit
-0.1 s above 1.5 times its budget (a sliver of budget stopped by the clock was reported as load),
-and an earlier run's counterexample of a claim without a trace (its row's configuration) replayed
-first, as traces were; 11: every PROVED row carries its basis (vacuous, immediate, substantive:
-:mod:`fatline_verify.prove.basis`), a row that cannot fire is reported vacuous however its unsat was
-reached, rma-fixed has the ``on-rma`` form (Lemma 3's "a robot on the RMA never leaves it"), and a
-repaired model has obligations for the repairs' own destinations (``repair-align``, ``repair-approach``,
-``repair-contract``). Not bumped for the small swarms enumerated after the first round
-(:mod:`fatline_verify.prove.small`): they find nothing where a row is PROVED (a test runs every
-PROVED row of ``proofs/`` through them), and a VIOLATED row replays its own counterexample first, so
-only an INCONCLUSIVE row can change, which ``--redo-inconclusive`` re-runs. Nor for the shipped
-counterexample corpus (:mod:`fatline_verify.prove.corpus`) and the rows' ``decided_by``: the corpus
-only adds candidates replayed first, each believed only if it replays, none of them beside a PROVED
-row (``tests/test_prove_corpus.py``), so again only an INCONCLUSIVE row can change. Nor for deadlocks
-reached after some rounds (:mod:`fatline_verify.prove.deadlock`: given with ``--known``, or reached from
-the small swarms by :func:`fatline_verify.prove.live.reach`): a replayed one makes an enabledness row
-VIOLATED that no unsat can have PROVED (the deadlock's named robot is a solution of it), so again only
-an INCONCLUSIVE row can change."""
-
-
 __all__ = [
     "DEFAULT_SLOTS",
     "DEFAULT_TIMEOUT",
     "ENCODED",
-    "ENCODING_VERSION",
     "LEMMAS",
     "MIN_CHECK",
     "Budget",
@@ -490,7 +305,6 @@ __all__ = [
     "isolated",
     "paper_part",
     "prove",
-    "prove_fingerprint",
     "prove_global",
     "prove_spec",
     "replay",

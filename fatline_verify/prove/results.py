@@ -2,8 +2,12 @@
 
 Nothing is lost: a partial run (``prove --lemma``, a report that recomputes some rows) replaces only
 the rows it recomputed and keeps every other row; an interrupted run has saved every row it
-finished. Each row carries the fingerprint of what produced it (model, slots, budget, encoding), so
-a reader can tell an up-to-date row from a stale one, row by row. Counterexample traces are never
+finished. Each row carries the fingerprint of what produced it (:func:`fatline_verify.prove.digests.row_digest`:
+the sources of its kind of obligation, the model, the settings, the solver), and the digests of the
+SMT-LIB it wrote (``smt2_sha256``; ``certificate_sha256`` for a linear certificate), which ``fatline
+prove --emit`` and ``python -m fatline_verify.prove.certify`` regenerate and check. A row whose
+fingerprint is not the current one is shown as STALE (:func:`stale_view`), never as current, and solved
+again by the next ``fatline prove``. Counterexample traces are never
 deleted: a trace that a later, weaker run no longer finds still replays, and stays.
 
 Two runs into one ``--out`` at once both keep their rows: each save re-reads ``results.json`` under a
@@ -25,7 +29,8 @@ from ..locks import holding
 from ..model.config import Model
 from ..outputs import Kind, is_output, load_json, read_json, resolve_recorded, write_json
 from ..trace.traces import write_trace
-from .prover import NotEncodedModel, ProofResult, Task, prove_fingerprint, task_key, tasks_for, witness_path
+from .digests import file_sha256, row_digest
+from .prover import NotEncodedModel, ProofResult, Task, task_key, tasks_for, witness_path
 from .smt.solving import solver_version
 from .tasks import paper_part, row_key
 
@@ -47,6 +52,8 @@ _OPTIONAL_FIELDS: dict[str, type | tuple[type, ...]] = {
     "fingerprint": (str, type(None)),
     "decided_by": str,
     "basis": str,
+    "smt2_sha256": str,
+    "certificate_sha256": str,
 }
 LOCK_WAIT = 120.0
 """Seconds a save waits for another run's save into the same directory before giving up."""
@@ -60,7 +67,12 @@ class ProofResults:
         self.path = directory / "results.json"
         self.traces = traces
         self.slots, self.timeout = slots, timeout
-        self.fingerprint = prove_fingerprint(model, slots, timeout)
+        self._digests: dict[str, str] = {}
+        """The current fingerprint of each obligation this store has been asked about, by key."""
+        try:
+            self._tasks = {task_key(t): t for t in tasks_for(model, two_movers=True)}
+        except NotEncodedModel:
+            self._tasks = {}
         self.rows: dict[str, dict[str, Any]] = self._read()
         self._mine: set[str] = set()
         """The rows this run produced: a save writes them over what another run saved meanwhile."""
@@ -127,10 +139,37 @@ class ProofResults:
         """The trace files proving ``tasks`` may write (checked before the run)."""
         return [witness_path(self.model, self.traces, task_key(t)) for t in tasks]
 
+    def digest(self, task: Task) -> str:
+        """The current fingerprint of ``task``'s row (:func:`~fatline_verify.prove.digests.row_digest`); a
+        later :meth:`add` of its result records it."""
+        key = task_key(task)
+        if key not in self._digests:
+            self._digests[key] = row_digest(self.model, task, slots=self.slots, timeout=self.timeout)
+        return self._digests[key]
+
+    def _digest_of(self, key: str) -> str | None:
+        """The current fingerprint of the obligation ``key`` (``None``: not an obligation of the model)."""
+        if key in self._digests:
+            return self._digests[key]
+        task = self._tasks.get(key)
+        return None if task is None else self.digest(task)
+
     def fresh(self, task: Task) -> dict[str, Any] | None:
-        """The saved row of ``task`` if it was produced with the current settings."""
+        """The saved row of ``task`` if it was produced by the current code, model, settings and solver."""
         row = self.rows.get(task_key(task))
-        return row if row is not None and row.get("fingerprint") == self.fingerprint else None
+        return row if row is not None and row.get("fingerprint") == self.digest(task) else None
+
+    def stale(self, keys: list[str] | None = None) -> list[str]:
+        """The keys of the saved rows (of ``keys``, default every row of the model's obligations) whose
+        fingerprint is not the current one."""
+        wanted = [k for k in (self.rows if keys is None else keys) if k in self.rows]
+        return [k for k in wanted if (d := self._digest_of(k)) is not None and self.rows[k].get("fingerprint") != d]
+
+    def shown(self, keys: list[str] | None = None) -> list[dict[str, Any]]:
+        """The rows of ``keys`` as every page and the terminal show them: a stale row as STALE
+        (:func:`stale_view`), never with its old verdict."""
+        stale = set(self.stale(keys))
+        return [stale_view(row, self.model.name) if row_key(row) in stale else row for row in self.ordered(keys)]
 
     def verdict(self, task: Task) -> str | None:
         """The saved verdict of ``task`` (whatever settings produced it), ``None`` without a row."""
@@ -145,8 +184,11 @@ class ProofResults:
             path = witness_path(self.model, self.traces, key)
             write_trace(r.witness, path)
             trace = path.as_posix()
+        digest = self._digest_of(key)
+        written = Path(r.smt2) if r.smt2 else None
+        certificate = written.with_suffix(".linear.smt2") if written is not None else None
         self.rows[key] = {
-            "fingerprint": self.fingerprint,
+            "fingerprint": digest,
             "lemma": r.lemma,
             "form": r.form,
             "rule": r.rule,
@@ -163,6 +205,12 @@ class ProofResults:
             "configuration": list(r.configuration),
             "decided_by": r.decided_by,
             **({"basis": r.basis} if r.basis else {}),
+            **({"smt2_sha256": file_sha256(written)} if written is not None and written.is_file() else {}),
+            **(
+                {"certificate_sha256": file_sha256(certificate)}
+                if certificate is not None and LINEARIZED in r.reason and certificate.is_file()
+                else {}
+            ),
         }
         self._mine.add(key)
         self.save()
@@ -201,6 +249,26 @@ class ProofResults:
             write_json(self.path, seal(self.document()))
 
 
+LINEARIZED = "shown on its linearization after"
+"""How a PROVED row's reason says its unsat came with a linear certificate (``.linear.smt2``) written
+beside its obligation (:func:`fatline_verify.prove.search.linearized`)."""
+
+STALE = "STALE"
+"""The verdict a stale row is shown with."""
+
+
+def stale_view(row: dict[str, Any], model: str) -> dict[str, Any]:
+    """A row made by other code, another model file, other settings or another solver than the current
+    ones, as it is shown: verdict STALE (so no count, lemma-level verdict or exit code takes it for
+    current), its old verdict in ``stale_verdict`` and in the reason, with the command that solves it
+    again."""
+    reason = (
+        f"stale: decided {row['verdict']} by other code, model, settings or solver than the current ones; "
+        f"fatline prove {model} solves it again. Was: {row.get('reason', '')}"
+    )
+    return {**row, "verdict": STALE, "stale_verdict": row["verdict"], "reason": reason}
+
+
 def _check_row(row: object, where: str, own: set[str]) -> None:
     """A results row has the fields the tool writes, of their types (a row of the model's own
     obligations also every field a page shows); else one line naming the row and the field."""
@@ -223,4 +291,4 @@ def _check_row(row: object, where: str, own: set[str]) -> None:
             raise InvalidInput(f"{where}: no {missing[0]}; expected the row fatline prove wrote")
 
 
-__all__ = ["ProofResults", "witness_path"]
+__all__ = ["STALE", "ProofResults", "stale_view", "witness_path"]

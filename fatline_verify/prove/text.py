@@ -158,5 +158,9 @@ def prove_lines(model: Any, results: list[dict[str, Any]], out: Any, *, verbose:
         else:
             lines.append("")
         lines.append("each reason in full, each trace and the robots a case names: fatline prove -v (or results.json)")
-    lines += ["", f"obligations (SMT-LIB2, each with its any-size argument) and results.json in {out}"]
+    lines += [
+        "",
+        f"results.json in {out}; every obligation as SMT-LIB2, each with its any-size argument: "
+        f"fatline prove {model.name} --emit DIR",
+    ]
     return lines

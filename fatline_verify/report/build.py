@@ -51,8 +51,8 @@ from ..outputs import (
     write_text,
 )
 from ..prove.prover import DEFAULT_SLOTS, DEFAULT_TIMEOUT, NotEncodedModel, prove, task_key, tasks_for
-from ..prove.results import ProofResults
-from ..prove.tasks import CoverageSpec
+from ..prove.results import ProofResults, stale_view
+from ..prove.tasks import CoverageSpec, row_key
 from ..trace.traces import check_replay, load_trace, validate
 from .against_pages import against_entries
 from .data import ModelReport
@@ -218,7 +218,8 @@ def cached_prove(model: Model, proofs: Path, slots: int, timeout: float, refresh
     todo = [t for t in todo if not isinstance(t, CoverageSpec)]
     if todo:
         prove(model, slots=slots, timeout=timeout, out=proofs, tasks=todo, on_result=store.add)
-    return store.document([task_key(t) for t in tasks])
+    keys = [task_key(t) for t in tasks]
+    return {**store.document(keys), "obligations": store.shown(keys)}  # a row left stale (coverage) reads STALE
 
 
 def build_report(
@@ -303,10 +304,12 @@ def _saved_prove(model: Model, proofs: Path) -> dict[str, Any] | None:
     is nothing to save); ``None`` if neither."""
     path = proofs / "results.json"
     if is_output(path, Kind.PROVE):
-        ProofResults(model, proofs, proofs / "traces", slots=DEFAULT_SLOTS, timeout=DEFAULT_TIMEOUT)  # checks it
+        store = ProofResults(model, proofs, proofs / "traces", slots=DEFAULT_SLOTS, timeout=DEFAULT_TIMEOUT)
         doc = load_json(path, what=path.as_posix(), expected="the results.json fatline prove wrote")
         shown = {str(lemma) for lemma in REPORTED}  # as cached_prove: the report's lemmas only
-        return {**doc, "obligations": [r for r in doc.get("obligations", []) if r.get("lemma") in shown]}
+        stale = set(store.stale())  # a stale row reads STALE
+        rows = [stale_view(r, model.name) if row_key(r) in stale else r for r in doc.get("obligations", [])]
+        return {**doc, "obligations": [r for r in rows if r.get("lemma") in shown]}
     return _refusal(model, proofs, DEFAULT_SLOTS, DEFAULT_TIMEOUT)
 
 
