@@ -48,11 +48,13 @@ class Param:
     doc: str
     minimum: int | None = None
     maximum: int | None = None
+    choices: tuple[str, ...] = ()
+    """For a string parameter: the values it may take (a reading's names); empty: any string."""
 
     def __post_init__(self) -> None:
         if not isinstance(self.default, int | str):  # bool is an int
             raise ValueError(f"Param default={self.default!r}: expected an int, a bool or a str")
-        if not isinstance(self.default, bool) and isinstance(self.default, int):
+        if not isinstance(self.default, bool) and isinstance(self.default, int | str):
             self.parse("default", self.default)
 
     def expected(self) -> str:
@@ -60,7 +62,7 @@ class Param:
         if isinstance(self.default, bool):
             return "true or false"
         if isinstance(self.default, str):
-            return "a string"
+            return f"one of {', '.join(self.choices)}" if self.choices else "a string"
         lo, hi = self.minimum, self.maximum
         if lo is not None and hi is not None:
             return f"a whole number {lo}..{hi}"
@@ -75,6 +77,8 @@ class Param:
         if ok and kind is int:
             assert isinstance(value, int)
             ok = (self.minimum is None or value >= self.minimum) and (self.maximum is None or value <= self.maximum)
+        if ok and kind is str and self.choices:
+            ok = value in self.choices
         if not ok:
             raise InvalidModel(f"{where}={value!r}: expected {self.expected()} ({self.doc})")
         return value  # type: ignore[return-value]
