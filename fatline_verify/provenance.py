@@ -9,11 +9,12 @@ Two parts, kept apart because the caches key on them differently:
   hand, so the committed results of the built-in models keep their fingerprints).
 - :func:`plugin_digest`: the sources of every object that decides for the model and is not defined in
   this package: the rule set's ``decide`` and its liveness encoding (a callable, or the module of a
-  ``"module:function"``), ``model.algorithm`` when set, every registered step lemma's checks, and the
-  model's round scheduler when it is a plug-in. Each contributes its name in its module and every
-  ``*.py`` file (relative path and bytes) of the top-level package that defines it (or its single
-  module's file). It is empty when nothing outside this package decides, so a built-in model's
-  fingerprints are as they were; every cache adds it (:func:`plugin_settings`, :func:`model_digest`).
+  ``"module:function"``), ``model.algorithm`` when set, every registered step lemma's checks, the
+  model's round scheduler when it is a plug-in, and its goal's checks when they are a plug-in's. Each
+  contributes its name in its module and every ``*.py`` file (relative path and bytes) of the
+  top-level package that defines it (or its single module's file). It is empty when nothing outside
+  this package decides, so a built-in model's fingerprints are as they were; every cache adds it
+  (:func:`plugin_settings`, :func:`model_digest`).
 
 A deciding object whose behaviour its source does not fix, or whose source cannot be read, gets a new
 random token on every call (:data:`UNREADABLE`): a digest that never matches a cache, so nothing
@@ -126,7 +127,7 @@ def _top_digest(top: str) -> str | None:
 
 def deciders(model: Any) -> Iterator[tuple[str, Any]]:
     """Every object that decides for ``model``, named by what it is (``"rules"``, ``"liveness"``,
-    ``"algorithm"``, ``"lemma NAME"``, ``"scheduler"``): this package's own included."""
+    ``"algorithm"``, ``"lemma NAME"``, ``"scheduler"``, ``"goal"``): this package's own included."""
     from .lemmas.registry import registered
     from .model.options import Scheduler
     from .rules import registry
@@ -143,6 +144,13 @@ def deciders(model: Any) -> Iterator[tuple[str, Any]]:
         yield f"lemma {lemma.name}", lemma.batch
     if not isinstance(model.options.scheduler, Scheduler):
         yield "scheduler", round_scheduler(model.options.scheduler)
+    from .goals import registry as goals
+
+    goal = goals.of(model)
+    if _module_of(goal.holds).split(".")[0] != PACKAGE:  # a plug-in's goal (this package's are in its sources)
+        yield "goal", goal.holds
+        if goal.positions is not None:
+            yield "goal", goal.positions
 
 
 def plugin_digest(model: Any) -> str:

@@ -38,12 +38,13 @@ from typing import Any
 import numpy as np
 from numba import njit
 
+from ..goals.registry import NO_KERNEL, judge_batch, kernel_of
 from ..lemmas.properties import Lemma
 from ..model.config import Model
 from ..model.lattice import KeyCodec, RankedCodec
 from ..rules.registry import decider
 from ..schedulers.base import Expansion, KeyExpansion
-from .compiled_common import GOALS, Events, Rows, at_goal, connected, settle
+from .compiled_common import Events, Rows, at_goal, connected, settle
 from .fast import pair_collides, snapshot_cells
 from .hashtable import HashTable, distinct, find
 from .keys import snapshot_key
@@ -360,7 +361,7 @@ class CompiledEngine:
         self.reach = isqrt(self.view2)
         self.side = 2 * self.reach + 1
         self.cell_bits = int(self.side * self.side).bit_length()
-        self.goal_kind = GOALS[model.options.goal]
+        self.goal_kind = kernel_of(model)
         self.width = 2 * model.radius
         self.decisions = HashTable(3)  # dx, dy, corner kind
         self.pairs = HashTable(1)  # collides?
@@ -477,7 +478,10 @@ class CompiledEngine:
                 self._learn_pairs(pairs)
 
         # decisions, then the pair keys that depend on them, then complete
-        return settle(states, lambda s: self._run_analyse(s, tables), learn, 3, "compiled"), tables
+        result = settle(states, lambda s: self._run_analyse(s, tables), learn, 3, "compiled")
+        if self.goal_kind == NO_KERNEL:  # a goal without a kernel: its own checks (fallback_note says so)
+            result.goal[:] = judge_batch(states, self.model)
+        return result, tables
 
     # --- pass 2 ---------------------------------------------------------------------------------
     def _run_expand(self, states: np.ndarray, an: _Analysis, tables: _Tables, codec: KeyCodec | None) -> Events:

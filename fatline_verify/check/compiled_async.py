@@ -34,11 +34,12 @@ from typing import Any
 import numpy as np
 from numba import njit
 
+from ..goals.registry import NO_KERNEL, judge_batch, kernel_of
 from ..lemmas.properties import Lemma
 from ..model.config import Model
 from ..schedulers.asynchronous import AsyncCodec
 from ..schedulers.base import Expansion, KeyExpansion
-from .compiled_common import GOALS, Events, Rows, at_goal, connected, settle
+from .compiled_common import Events, Rows, at_goal, connected, settle
 from .fast_async import _SWEEP_BITS, FastAsyncEngine
 from .hashtable import HashTable, distinct, find
 from .keys import snapshot_key
@@ -352,7 +353,7 @@ class CompiledAsyncEngine:
         self.rigid: bool = system.rigid
         f = self.fast
         self.view2, self.reach, self.side, self.cell_bits, self.near = f.view2, f.reach, f.side, f.cell_bits, f.near
-        self.goal_kind = GOALS[self.model.options.goal]
+        self.goal_kind = kernel_of(self.model)
         self.width = 2 * self.model.radius * self.K
         self.decisions = HashTable(5)  # the fast engine's decision row
         self.sweeps = HashTable(1)  # collides?
@@ -442,6 +443,9 @@ class CompiledAsyncEngine:
             not want_keys, want_keys, wf, hf, bits, per_word,
             goal, ev.src, ev.action, ev.flags, exact, ev.after, ev.keys, ev.fits,
         )  # fmt: skip
+        if self.goal_kind == NO_KERNEL:  # a goal without a kernel: its own checks, on the robots at rest
+            idle = (states[..., 0:2] == states[..., 2:4]).all(axis=(1, 2))
+            goal[idle] = judge_batch(states[idle, :, 0:2], self.model, self.K)
         return enabled, goal, ev.src, ev.action, ev.flags, exact, ev.after, ev.keys, ev.fits
 
     # --- the engine interface -------------------------------------------------------------------

@@ -11,10 +11,12 @@ from typing import Any, TypeVar
 import numpy as np
 from numba import njit
 
+from ..goals.registry import KERNELS
 from ..model.options import Goal
 
-GOALS = {Goal.VERTICAL_LINE: 0, Goal.ANY_LINE: 1, Goal.LINE_MEETS_DISCS: 2}
-"""The goals as the kernels number them."""
+GOALS = {reading: KERNELS[reading.value] for reading in Goal}
+"""The paper's three goals (the ``goal`` option's readings) as the kernels number them; every goal with a
+kernel, ``point`` too, by name: :data:`fatline_verify.goals.registry.KERNELS`."""
 
 
 # --- per-state kernels ----------------------------------------------------------------------------
@@ -47,8 +49,17 @@ def connected(pos: np.ndarray, view2: int, nbrs: np.ndarray) -> bool:
 
 @njit(cache=True)
 def at_goal(pos: np.ndarray, kind: int, width: int) -> bool:
-    """:func:`~fatline_verify.model.lattice.goal_positions` of one state (``kind``: index in :data:`GOALS`)."""
+    """:func:`~fatline_verify.model.lattice.goal_positions` of one state (``kind``: a goal's number in
+    :data:`~fatline_verify.goals.registry.KERNELS`; 3 is ``point``; -1, a goal without a kernel: false here,
+    judged after the kernel by :func:`fatline_verify.goals.registry.judge_batch`)."""
     n = pos.shape[0]
+    if kind < 0:
+        return False
+    if kind == 3:
+        same = True
+        for i in range(1, n):
+            same = same and pos[i, 0] == pos[0, 0] and pos[i, 1] == pos[0, 1]
+        return same
     if kind == 0:
         same = True
         for i in range(1, n):

@@ -20,9 +20,10 @@ from typing import Any
 
 import numpy as np
 
+from ..goals.registry import judge_batch
 from ..lemmas.properties import Lemma
 from ..model.config import Model
-from ..model.lattice import KeyTable, connected, goal_positions
+from ..model.lattice import KeyTable, connected
 from ..rules.registry import decider
 from ..schedulers.base import Expansion
 from ..schedulers.round import closest_dist2, collides
@@ -193,7 +194,7 @@ class FastEngine:
 
     # --- goal -------------------------------------------------------------------------------
     def _goal(self, states: np.ndarray) -> np.ndarray:
-        return goal_positions(states, self.model.options.goal, 2 * self.model.radius)
+        return judge_batch(states, self.model)
 
     # --- the expansion ----------------------------------------------------------------------
     def expand(self, states: np.ndarray) -> Expansion:

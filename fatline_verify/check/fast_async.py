@@ -27,6 +27,7 @@ from typing import Any
 
 import numpy as np
 
+from ..goals.registry import judge_batch
 from ..lemmas.properties import Lemma
 from ..model.config import Model
 from ..model.geometry import path_point_dist2, subpath
@@ -176,7 +177,9 @@ class FastAsyncEngine:
 
         bits = 1 << np.arange(n, dtype=np.int64)
         enabled = ((moving | look) * bits).sum(axis=1)
-        goal = ~moving.any(axis=1) & goal_positions(start, self.model.options.goal, 2 * self.model.radius * K)
+        goal = ~moving.any(axis=1)
+        if goal.any():
+            goal[goal] = judge_batch(start[goal], self.model, K)
 
         present = np.zeros((m, n, 2), dtype=bool)
         present[..., 0] = moving | look

@@ -6,6 +6,7 @@ from typing import Any
 
 import numpy as np
 
+from ..goals.registry import LINES, missed
 from ..lemmas.properties import SAFETY, Lemma, LemmaResult, StopReason, Verdict
 from ..lemmas.registry import StepLemma, registered
 from ..resources import format_size, machine_memory
@@ -88,20 +89,26 @@ def lemma_verdicts(ex: Exploration) -> list[LemmaResult]:
     return [out[lemma] for lemma in (*applies, *extras)]
 
 
+def _never(goal: str) -> str:
+    """A fair cycle's reason: the paper's words for its line goals, the goal's name for the others."""
+    return "a fair cycle never forms the line" if goal in LINES else f"a fair cycle never reaches the goal ({goal})"
+
+
 def _liveness(ex: Exploration, expanded: np.ndarray, deadlocks: np.ndarray) -> dict[Lemma, LemmaResult]:
     """Progress (a reachable deadlock) and termination (a deadlock, or a fair cycle that never reaches the goal)."""
     out: dict[Lemma, LemmaResult] = {}
     if len(deadlocks):
         for lemma in (Lemma.PROGRESS, Lemma.TERMINATION):
             doc = state_witness(ex, int(deadlocks[0]), lemma)
-            out[lemma] = _result(ex, lemma, Verdict.VIOLATED, "a deadlock: no robot enabled, no line", doc)
+            reason = f"a deadlock: no robot enabled, {missed(str(ex.model.options.goal))}"
+            out[lemma] = _result(ex, lemma, Verdict.VIOLATED, reason, doc)
         return out
     out[Lemma.PROGRESS] = _bounded(ex, Lemma.PROGRESS, liveness=False)
     lassos = fair_cycles(ex, expanded & ~ex.goal)
     if lassos:
         doc = lasso_witness(lasso_run(ex, lassos[0].start, lassos[0].cycle), ex, Lemma.TERMINATION)
         out[Lemma.TERMINATION] = _result(
-            ex, Lemma.TERMINATION, Verdict.VIOLATED, "a fair cycle never forms the line", doc
+            ex, Lemma.TERMINATION, Verdict.VIOLATED, _never(str(ex.model.options.goal)), doc
         )
     else:
         out[Lemma.TERMINATION] = _bounded(ex, Lemma.TERMINATION, liveness=True)

@@ -75,6 +75,17 @@ class Bounds:
     """A cap on states per search; ``None``: what ``--max-memory`` affords."""
 
 
+def _robots(rules: str) -> str:
+    """The robots of the rule set called ``rules`` (``"discs"`` or ``"points"``); the paper's discs for a name
+    no rule set has (a model being built is checked elsewhere)."""
+    from ..rules import registry
+
+    try:
+        return registry.get(rules or "paper").robots
+    except InvalidModel:
+        return "discs"
+
+
 @functools.cache
 def _view(rad_v: Number, q: int) -> int:
     """:attr:`Model.view`, computed once per parameters (it is asked for on every pair of every round)."""
@@ -159,8 +170,16 @@ class Model:
         return 4 * self.radius * self.radius
 
     @property
+    def points(self) -> bool:
+        """Whether its rule set's robots are points (``RuleSet(robots="points")``), not the paper's discs."""
+        return _robots(self.rules) == "points"
+
+    @property
     def apart2(self) -> int:
-        """The least integer squared lattice distance that meets the initial condition (>= delta)."""
+        """The least integer squared lattice distance that meets the initial condition (>= delta; 1 for
+        point robots, whose condition is distinct positions)."""
+        if self.points:
+            return 1
         bound = (Fraction(self.parameters.delta) * self.parameters.q) ** 2
         return math.ceil(bound)
 
@@ -170,7 +189,10 @@ class Model:
 
     def initially_apart(self, d2: Number) -> bool:
         """The initial condition on one pair: "the mutual distance between two robots is at least
-        delta > 2", i.e. ``d2 >= (delta q)^2`` (distance exactly delta meets it)."""
+        delta > 2", i.e. ``d2 >= (delta q)^2`` (distance exactly delta meets it); for point robots,
+        distinct positions (``d2 > 0``): delta speaks of discs."""
+        if self.points:
+            return d2 > 0
         return d2 >= (Fraction(self.parameters.delta) * self.parameters.q) ** 2
 
     def to_lattice(self, point: Point) -> Point:
@@ -192,7 +214,7 @@ class Model:
         rules = "" if self.rules in IMPLIED else f"rules={self.rules}, "
         own = "".join(
             f"; {seam} " + ", ".join(f"{k}={v}" for k, v in values)
-            for seam, values in ((seam, self.setting(seam).items()) for seam in ("rules", "scheduler"))
+            for seam, values in ((seam, self.setting(seam).items()) for seam in ("rules", "scheduler", "goal"))
             if values
         )
         return (
@@ -208,6 +230,10 @@ def seam_owner(model: Model, seam: str, scheduler: str | None = None) -> Any:
         from ..rules import registry
 
         return registry.of(model)
+    if seam == "goal":
+        from ..goals import registry as goals
+
+        return goals.of(model)
     name = str(scheduler or model.options.scheduler)
     if name == Scheduler.ASYNC.value:
         return None
@@ -227,7 +253,7 @@ def implied_rules(options: Options) -> str:
     return "repaired" if is_repaired(options) else "paper"
 
 
-_TOP_KEYS = {"name", "description", "rules", "parameters", "options", "bounds", "expected", "scheduler"}
+_TOP_KEYS = {"name", "description", "rules", "parameters", "options", "bounds", "expected", "scheduler", "goal"}
 _LEMMAS = tuple(lemma.value for lemma in CHECKED)
 _VERDICTS = ("VIOLATED", "HOLDS_WITHIN_BOUNDS", "PROVED", "INCONCLUSIVE")
 _PARAM_KEYS = {"rad_v", "q", "delta", "async_steps"}
@@ -294,11 +320,12 @@ def model_from_mapping(data: dict[str, object], *, source: str = "", default_nam
         if not isinstance(rules_raw, str):
             raise InvalidModel(f"rules.name={rules_raw!r}: expected the name of a rule set in the [rules] table")
     rules = _rules(rules_raw, options, data.get("options", {}))  # type: ignore[arg-type]
+    options = _goal(rules, options, data.get("options", {}))  # type: ignore[arg-type]
     if not isinstance(options.scheduler, Scheduler):
         from ..schedulers.activation import scheduler_named
 
         scheduler_named(str(options.scheduler))  # a registered one, or one line naming every scheduler
-    settings = _settings(rules, options, data.get("scheduler"), rules_table)
+    settings = _settings(rules, options, data.get("scheduler"), rules_table, data.get("goal"))
     bounds_raw = data.get("bounds", {})
     if not isinstance(bounds_raw, dict):
         raise InvalidModel(f"bounds={bounds_raw!r}: expected a table")
@@ -333,19 +360,39 @@ def model_from_mapping(data: dict[str, object], *, source: str = "", default_nam
     )
 
 
-def _settings(rules: str, options: Options, scheduler_table: object, rules_table: object) -> Settings:
-    """The ``[scheduler]`` and ``[rules]`` tables, checked against what the model's scheduler and rule
-    set declare (:mod:`.seams`): every declared parameter's value, defaults filled."""
+def _settings(
+    rules: str, options: Options, scheduler_table: object, rules_table: object, goal_table: object = None
+) -> Settings:
+    """The ``[scheduler]``, ``[rules]`` and ``[goal]`` tables, checked against what the model's scheduler,
+    rule set and goal declare (:mod:`.seams`): every declared parameter's value, defaults filled."""
     probe = Model(options=options, rules=rules)
     out = []
-    for seam, table in (("scheduler", scheduler_table), ("rules", rules_table)):
+    names = {"scheduler": f"scheduler {str(options.scheduler)!r}", "rules": f"rule set {rules!r}"}
+    names["goal"] = f"goal {str(options.goal)!r}"
+    for seam, table in (("scheduler", scheduler_table), ("rules", rules_table), ("goal", goal_table)):
         owner = seam_owner(probe, seam)
-        name = str(options.scheduler) if seam == "scheduler" else rules
-        what = f"scheduler {name!r}" if seam == "scheduler" else f"rule set {name!r}"
+        what = names[seam]
         values = parse_table(seam, what, declared(owner), table)
         if values:
             out.append((seam, values))
     return tuple(out)
+
+
+def _goal(rules: str, options: Options, given: dict[str, object]) -> Options:
+    """``options`` with the goal the model means: the one its file sets, else the one its rule set declares
+    (``RuleSet(goal=...)``), else the paper's default; a registered goal (one line naming every goal
+    otherwise) that means something for the rule set's robots (:func:`~fatline_verify.goals.registry.require_for`)."""
+    from ..goals import registry as goals
+    from ..rules import registry
+
+    rule_set = registry.get(rules)
+    if "goal" not in (given if isinstance(given, dict) else {}) and rule_set.goal is not None:
+        from .options import parse_reading
+
+        options = replace(options, goal=parse_reading("goal", rule_set.goal))  # type: ignore[arg-type]
+        goals.get(str(options.goal), where=f"rule set {rules!r}: goal")
+    goals.require_for(Model(options=options, rules=rules), rule_set.robots, rules)
+    return options
 
 
 def _rules(raw: object, options: Options, given: dict[str, object]) -> str:
@@ -435,9 +482,10 @@ def model_to_mapping(model: Model) -> dict[str, object]:
     elif model.rules != implied_rules(model.options):
         out["rules"] = model.rules
     out |= {"parameters": parameters, "options": declared_options(model)}
-    scheduler = model.setting("scheduler")
-    if scheduler:
-        out["scheduler"] = scheduler
+    for seam in ("scheduler", "goal"):
+        values = model.setting(seam)
+        if values:
+            out[seam] = values
     return out
 
 

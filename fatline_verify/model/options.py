@@ -176,11 +176,23 @@ class Contact(StrEnum):
 
 
 class Goal(StrEnum):
-    """What "form a straight line" means."""
+    """What "form a straight line" means: the paper's three readings. Other registered goals
+    (:mod:`fatline_verify.goals`) are named by a :class:`GoalName`."""
 
     VERTICAL_LINE = "vertical-line"
     ANY_LINE = "any-line"
     LINE_MEETS_DISCS = "line-meets-discs"
+
+
+class GoalName(str):
+    """The ``goal`` of a model that names a registered goal other than the paper's three readings
+    (``point``, ``circle``, a plug-in's: :mod:`fatline_verify.goals.registry`), checked when the model is built."""
+
+    __slots__ = ()
+
+    @property
+    def value(self) -> str:
+        return str(self)
 
 
 CATALOGUE: dict[str, OptionSpec] = {
@@ -425,7 +437,7 @@ class Options:
     motion: Motion = Motion.RIGID
     timing: Timing = Timing.ANY_SPEED
     contact: Contact = Contact.TOUCH_ALLOWED
-    goal: Goal = Goal.VERTICAL_LINE
+    goal: Goal | GoalName = Goal.VERTICAL_LINE
     repair_lock: RepairLock = RepairLock.OFF
     repair_stack: RepairStack = RepairStack.OFF
     repair_approach: RepairApproach = RepairApproach.OFF
@@ -474,7 +486,7 @@ SLUG_NAME = re.compile(r"[a-z][a-z0-9-]{0,39}")
 """A plug-in's name: lower-case letters, digits and '-'."""
 
 
-def parse_reading(name: str, value: object) -> StrEnum | SchedulerName:
+def parse_reading(name: str, value: object) -> StrEnum | SchedulerName | GoalName:
     """The reading ``value`` of option ``name``, or a one-line :class:`InvalidModel`."""
     spec = CATALOGUE.get(name)
     if spec is None:
@@ -484,11 +496,16 @@ def parse_reading(name: str, value: object) -> StrEnum | SchedulerName:
             raise ValueError(value)
         if name == "scheduler" and value not in spec.readings and SLUG_NAME.fullmatch(value):
             return SchedulerName(value)  # a registered scheduler's, checked when the model is built
+        if name == "goal" and value not in spec.readings and SLUG_NAME.fullmatch(value):
+            return GoalName(value)  # a registered goal's, checked when the model is built
         return spec.enum(value)
     except ValueError:
-        raise InvalidModel(
-            f"option {name}={value!r}: unknown reading; expected one of {', '.join(spec.readings)}"
-        ) from None
+        readings = spec.readings
+        if name == "goal":  # every registered goal, not only the paper's readings
+            from ..goals import registry
+
+            readings = registry.names()
+        raise InvalidModel(f"option {name}={value!r}: unknown reading; expected one of {', '.join(readings)}") from None
 
 
 def options_from_mapping(mapping: dict[str, object], *, where: str = "options") -> Options:

@@ -32,7 +32,7 @@ from ..errors import InvalidModel
 Value = int | bool | str
 """What a parameter holds: its default's type."""
 
-SEAMS = ("scheduler", "rules")
+SEAMS = ("scheduler", "rules", "goal")
 """The seams whose registered objects may declare parameters, by their table's name."""
 
 Settings = tuple[tuple[str, tuple[tuple[str, Value], ...]], ...]

@@ -11,9 +11,8 @@ from typing import TYPE_CHECKING
 
 from ..errors import InvalidInput
 from .config import Model
-from .geometry import collinear, dist2, width_at_most
+from .geometry import dist2
 from .numbers import Point, show, show_point
-from .options import Goal
 
 if TYPE_CHECKING:
     import networkx as nx
@@ -61,13 +60,11 @@ def is_connected(state: Sequence[Point], model: Model) -> bool:
 
 
 def is_goal(state: Sequence[Point], model: Model) -> bool:
-    """ "The robots in R will form a straight line", per the ``goal`` option."""
-    goal = model.options.goal
-    if goal is Goal.VERTICAL_LINE:
-        return len({p[0] for p in state}) <= 1
-    if goal is Goal.ANY_LINE:
-        return collinear(state)
-    return width_at_most(state, 2 * model.radius)
+    """Whether ``state`` is at the model's goal ("the robots in R will form a straight line", per the
+    ``goal`` option, or another registered goal: :mod:`fatline_verify.goals`), exactly."""
+    from ..goals import registry
+
+    return registry.holds(state, model)
 
 
 def initial_problems(state: Sequence[Point], model: Model) -> list[str]:
@@ -77,12 +74,16 @@ def initial_problems(state: Sequence[Point], model: Model) -> list[str]:
     delta > 2 units" (distance exactly delta meets it) and "Initially, the graph G is assumed to be connected".
     """
     problems: list[str] = []
+    points = model.points
     for i in range(len(state)):
         for j in range(i + 1, len(state)):
             d2 = dist2(state[i], state[j])
             pi, pj = show_point(model.from_lattice(state[i])), show_point(model.from_lattice(state[j]))
             where = f"robots {i} {pi} and {j} {pj}"
-            if d2 < model.contact2:
+            if points:  # point robots: distinct positions are the whole condition
+                if d2 == 0:
+                    problems.append(f"{where} share a point (point robots start at distinct positions)")
+            elif d2 < model.contact2:
                 problems.append(f"{where} overlap (centre distance below 2)")
             elif not model.initially_apart(d2):
                 problems.append(f"{where} are closer than delta")
@@ -97,7 +98,5 @@ def require_initial(state: Sequence[Point], model: Model) -> None:
         raise InvalidInput("init='': expected at least one robot position")
     problems = initial_problems(state, model)
     if problems:
-        delta = model.parameters.delta
-        raise InvalidInput(
-            f"init: {problems[0]}; expected pairwise distance >= delta={show(delta)} and a connected swarm"
-        )
+        apart = "distinct positions" if model.points else f"pairwise distance >= delta={show(model.parameters.delta)}"
+        raise InvalidInput(f"init: {problems[0]}; expected {apart} and a connected swarm")

@@ -23,6 +23,7 @@ import itertools
 import matplotlib.pyplot as plt
 from matplotlib.patches import Circle, FancyArrowPatch, Rectangle
 
+from ..goals.registry import missed
 from ..model.config import Model
 from ..model.options import Bands, Quadrants, Visibility
 from ..rules import registry
@@ -168,7 +169,7 @@ def _title(run: Run, doc: dict[str, Any], k: int, note: str = "") -> str:
     if k == 0:
         return "start"
     tail = {
-        "deadlock": "deadlock: nobody moves, no line",
+        "deadlock": f"deadlock: nobody moves, {missed(str(run.model.options.goal))}",
         "cycle": "the loop repeats forever",
         "goal": "goal reached",
         "violation": f"after the violating {system_for(run.model).step_word}",

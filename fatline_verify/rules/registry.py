@@ -167,11 +167,22 @@ class RuleSet:
     ``no-collision``, ``connectivity``, ``rma-fixed``). A lemma left out is still judged, and its
     violations found, but the search goes on past them, as ``--after-violation continue`` does for all."""
 
+    goal: str | None = None
+    """The registered goal (:mod:`fatline_verify.goals`) this rule set is for, by name: what a model of it
+    takes when its file sets no ``goal`` option (``None``: the option's default, the paper's
+    ``vertical-line``). The liveness lemmas (progress, approach, termination) are judged against the
+    model's goal."""
+    robots: str = "discs"
+    """What a robot is: ``"discs"`` (the paper's fat robots of one radius) or ``"points"``. For points
+    ``no-collision`` does not apply (robots may share a point) and an initial configuration needs only
+    distinct positions, not centres ``delta`` apart."""
+
     def applies(self) -> tuple[Lemma, ...]:
-        """The built-in lemmas judged for this rule set, in report order."""
-        if self.lemmas is None:
-            return CHECKED
-        return tuple(lemma for lemma in CHECKED if lemma.value in self.lemmas)
+        """The built-in lemmas judged for this rule set, in report order (never ``no-collision`` for points)."""
+        found = CHECKED if self.lemmas is None else tuple(lemma for lemma in CHECKED if lemma.value in self.lemmas)
+        if self.robots == "points":
+            found = tuple(lemma for lemma in found if lemma is not Lemma.NO_COLLISION)
+        return found
 
     def prunes(self) -> tuple[Lemma, ...]:
         """The step lemmas whose violating steps are not followed."""
@@ -180,6 +191,15 @@ class RuleSet:
 
     def check_setting(self) -> None:
         """Refuse, in one line, a setting that names no lemma of the checker or prunes one that does not apply."""
+        if self.robots not in ("discs", "points"):
+            raise ValueError(f"rule set {self.name!r}: robots={self.robots!r}: expected 'discs' or 'points'")
+        if self.goal is not None and not isinstance(self.goal, str):
+            raise ValueError(f"rule set {self.name!r}: goal={self.goal!r}: expected the name of a registered goal")
+        if self.robots == "points" and self.lemmas is not None and Lemma.NO_COLLISION.value in self.lemmas:
+            raise ValueError(
+                f"rule set {self.name!r}: lemmas names 'no-collision' with robots='points': point robots may share "
+                "a point, so there is no collision to judge; expected robots='discs' or no-collision left out"
+            )
         known = {lemma.value for lemma in CHECKED}
         for name, given in (("lemmas", self.lemmas), ("safety", self.safety)):
             if given is None:

@@ -24,6 +24,7 @@ from typing import Any
 import jsonschema
 
 from ..errors import FatlineError, InvalidInput, InvalidTrace, TraceDidNotReproduce, Unsupported
+from ..goals import registry as goal_registry
 from ..lemmas import registry as lemma_registry
 from ..lemmas.properties import SAFETY, Lemma
 from ..model.config import Model, model_from_mapping, model_to_mapping
@@ -79,9 +80,9 @@ def run_to_json(run: Run, origin: dict[str, Any] | None = None, focus: str | Non
 
 def plugins_used(model: Model, lemma: str | None) -> list[dict[str, str]]:
     """The plug-ins a trace of ``model`` witnessing ``lemma`` needs to be replayed: its rule set, its
-    scheduler and its lemma where an installed package's entry point registered them, each with that
+    scheduler, its goal and its lemma where an installed package's entry point registered them, each with that
     package's distribution name and version (``importlib.metadata``)."""
-    used = [("rules", model.rules), ("scheduler", str(model.options.scheduler))]
+    used = [("rules", model.rules), ("scheduler", str(model.options.scheduler)), ("goal", str(model.options.goal))]
     if lemma is not None:
         used.append(("lemma", lemma))
     out = []
@@ -100,6 +101,7 @@ def require_plugins(doc: dict[str, Any], where: str = "trace") -> None:
         "rules": lambda name: name in rules_registry.names(),
         "scheduler": _scheduler_known,
         "lemma": lambda name: lemma_registry.find(name) is not None,
+        "goal": lambda name: name in goal_registry.names(),
     }
     for entry in doc.get("plugins", ()):
         kind, name = entry["kind"], entry["name"]
