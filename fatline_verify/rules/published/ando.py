@@ -113,6 +113,8 @@ ANDO = register(
         "enclosing what it sees, as far as keeps it within V/2 of the midpoint with every robot it sees.",
         labels=dict(LABELS),
         lemmas=LEMMAS,
+        robots="points",
+        goal="near-gathering",
         parameters=PARAMETERS,
     )
 )

@@ -102,6 +102,8 @@ GRAVITY = register(
         "barycentre of the robots it sees and itself.",
         labels=dict(LABELS),
         lemmas=LEMMAS,
+        robots="points",
+        goal="point",
         parameters=PARAMETERS,
     )
 )

@@ -132,6 +132,8 @@ UNIVERSAL = register(
         "gatherR2): to the majority tower, else to the target of the smallest enclosing circle.",
         labels=dict(LABELS),
         lemmas=LEMMAS,
+        robots="points",
+        goal="point",
     )
 )
 
