@@ -51,3 +51,22 @@ def test_a_reading_the_rule_set_does_not_name_is_one_line_exit_2(capsys, tmp_pat
     code, out, err = run_cli(capsys, "check", str(bad))
     assert code == 2 and out == "" and err.count("\n") == 1
     assert "rules.destination='float': expected one of lattice, rational" in err
+
+
+def test_a_state_off_the_lattice_by_one_common_offset_is_its_lattice_translate() -> None:
+    """Robots agree on axes, not on an origin: a successor whose robots share one rational offset is the
+    lattice state it translates to (gravity-fsync's gathering at a rational barycentre is followed);
+    robots off the lattice by different offsets are not (counted, not explored)."""
+    from fractions import Fraction as F
+
+    from fatline_verify.model.config import load_model
+    from fatline_verify.schedulers.systems import system_for
+
+    system = system_for(load_model("gravity-fsync"))
+    third = F(1, 3)
+    moved = system.exact_array(((F(7, 3), F(5, 3)), (F(7, 3), F(5, 3)), (F(7, 3), F(5, 3))))
+    assert moved is not None and moved.tolist() == [[2, 1], [2, 1], [2, 1]]
+    shifted = system.exact_array(((third, 0), (1 + third, 2)))
+    assert shifted is not None and shifted.tolist() == [[0, 0], [1, 2]]
+    assert system.exact_array(((F(1, 2), 0), (1, 0))) is None
+    assert system.exact_array(((0, 0), (3, 4))).tolist() == [[0, 0], [3, 4]]
