@@ -16,7 +16,7 @@ BENCH = sorted((Path(__file__).resolve().parent.parent / "bench").glob("*.toml")
 """Models kept out of models/ (not shipped) that carry golden verdicts too."""
 
 
-SLOW = {"gravity", "universal-gathering"}
+SLOW = {"gravity", "universal"}
 """Models whose golden run takes half a minute or more: 4 robots whose moves leave the lattice, searched
 by the scalar engine (docs/published/); the slow tier runs them."""
 

@@ -23,7 +23,7 @@ def test_universal_gathering_under_async_never_gathers_three_robots(capsys, tmp_
     """The certified algorithm's claim is SSYNC's; under ASYNC the checker's witness is a fair cycle: a robot
     in the majority tower moves on a stale snapshot and the tower changes sides, forever (replayed)."""
     traces = tmp_path / "t"
-    code, _, _ = run_cli(capsys, "check", "universal-gathering-async", "--traces", str(traces), "-q")
+    code, _, _ = run_cli(capsys, "check", "universal-async", "--traces", str(traces), "-q")
     assert code == 1
     (trace,) = traces.glob("*termination*.json")
     doc = json.loads(trace.read_text())

@@ -47,6 +47,7 @@ from collections.abc import Sequence
 from fractions import Fraction
 from typing import Any
 
+from ...lemmas.properties import Lemma
 from ...model.seams import Param
 from ..decision import Decision, stay
 from ..registry import RuleSet, register
@@ -101,7 +102,7 @@ def decide(snapshot: Sequence[tuple[Any, Any]], model: Any) -> Decision:
     return Decision(rule, end, ((0, 0), end))
 
 
-LEMMAS = ("connectivity", "progress", "termination")
+LEMMAS = tuple(lemma.value for lemma in (Lemma.CONNECTIVITY, Lemma.PROGRESS, Lemma.TERMINATION))
 """What the paper claims, in the checker's terms: visibility kept (Lemma: mutually visible robots stay so,
 so the visibility graph stays connected) and convergence (progress and termination against the goal)."""
 

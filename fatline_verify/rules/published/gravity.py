@@ -38,6 +38,7 @@ from collections.abc import Sequence
 from fractions import Fraction
 from typing import Any
 
+from ...lemmas.properties import Lemma
 from ...model.seams import Param
 from ..decision import Decision, stay
 from ..registry import RuleSet, register
@@ -90,7 +91,7 @@ def decide(snapshot: Sequence[tuple[Any, Any]], model: Any) -> Decision:
     return Decision("toward-barycentre", near, ((0, 0), near))
 
 
-LEMMAS = ("connectivity", "progress", "termination")
+LEMMAS = tuple(lemma.value for lemma in (Lemma.CONNECTIVITY, Lemma.PROGRESS, Lemma.TERMINATION))
 """The claims in the checker's terms: the swarm stays connected (trivially with full visibility; the
 claim Ando et al. deny with limited visibility) and the robots gather (progress and termination)."""
 

@@ -54,6 +54,7 @@ from collections.abc import Sequence
 from fractions import Fraction
 from typing import Any
 
+from ...lemmas.properties import Lemma
 from ..decision import Decision, stay
 from ..registry import RuleSet, register
 from .exact import Pt, dist2, frac, point, smallest_enclosing_circle
@@ -120,7 +121,7 @@ def decide(snapshot: Sequence[tuple[Any, Any]], model: Any) -> Decision:
     return Decision(rule, end, ((0, 0), end))
 
 
-LEMMAS = ("progress", "termination")
+LEMMAS = tuple(lemma.value for lemma in (Lemma.PROGRESS, Lemma.TERMINATION))
 """The claim in the checker's terms: the robots gather (exact gathering) under a fair SSYNC scheduler.
 Connectivity means nothing with unlimited visibility; no-collision nothing for points."""
 
