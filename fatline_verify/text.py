@@ -18,7 +18,7 @@ from fractions import Fraction
 from functools import cache
 from typing import Any
 
-from .goals.registry import LINES, fallback_note, reached
+from .goals.registry import fallback_note, outcome_words
 from .lemmas.properties import Lemma
 from .model.config import Model
 from .model.numbers import Point, format_number, parse_number
@@ -274,16 +274,10 @@ def trace_lines(doc: dict[str, Any], model: Model | None = None) -> list[str]:
         for v in rnd["violations"]:
             lines.append("  VIOLATED " + violation_line(v))
     n = len(doc["rounds"])
-    goal = doc["model"]["options"].get("goal", "vertical-line")
-    line = goal in LINES
     tail = {
-        "goal": f"goal reached: {reached(goal)} ({goal})",
-        "deadlock": "deadlock: no robot is enabled and "
-        + ("the robots do not form a line" if line else f"the robots are not at the goal ({goal})"),
         "violation": "stopped at a violation",
         "round-limit": "round limit reached: neither the goal, a deadlock nor a violation",
-        "cycle": "a fair cycle: the loop below repeats forever without "
-        + ("forming the line" if line else f"reaching the goal ({goal})"),
+        **outcome_words(doc["model"]["options"].get("goal", "vertical-line")),
     }[doc["outcome"]]
     lines.append(f"outcome after {n} {word}{'s' if n != 1 else ''}: {tail}")
     if doc["outcome"] == "deadlock":

@@ -142,3 +142,11 @@ def test_every_engine_gives_the_same_verdicts_for_a_goal_without_a_kernel(goal: 
     assert got["scalar"] == got["fast"] == got["compiled"]
     liveness = {v for lemma, _, v in got["scalar"][0] if lemma in ("progress", "termination")}
     assert liveness == {"VIOLATED", "HOLDS_WITHIN_BOUNDS"}  # the goal decides something here
+
+
+def test_the_prover_claims_nothing_for_a_goal_it_does_not_encode() -> None:
+    from fatline_verify.prove.goals import goal_problem
+
+    assert goal_problem(load_model("paper")) == ""
+    for goal in ("circle", "near-gathering", "any-line"):
+        assert goal_problem(_model(goal)).endswith("this goal is not encoded, so nothing is claimed")

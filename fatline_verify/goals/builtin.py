@@ -17,7 +17,7 @@ import numpy as np
 from ..model.geometry import collinear, width_at_most
 from ..model.options import Goal as Reading
 from ..model.seams import Param
-from .registry import Goal, register_goal
+from .registry import KERNELS, Goal, register_goal
 from .shapes import at_one_point, at_one_point_batch, in_disc, in_disc_batch, on_circle, on_circle_batch
 
 Point = tuple[Any, Any]
@@ -47,35 +47,25 @@ def _meets_discs(state: Sequence[Point], model: Any) -> bool:
     return width_at_most(state, 2 * model.radius)
 
 
-VERTICAL_LINE = register_goal(
-    Goal(
-        Reading.VERTICAL_LINE.value,
-        "every centre has the same x (the paper's proof puts every robot on the right-most vertical)",
-        _vertical,
-        _line_batch(Reading.VERTICAL_LINE),
-        kernel=0,
-        scaled=True,
+def _line(reading: Reading, says: str, exact: Any) -> Goal:
+    """Register one of the paper's readings of "form a straight line", with its compiled kernel."""
+    return register_goal(
+        Goal(reading.value, says, exact, _line_batch(reading), kernel=KERNELS[reading.value], scaled=True)
     )
+
+
+VERTICAL_LINE = _line(
+    Reading.VERTICAL_LINE,
+    "every centre has the same x (the paper's proof puts every robot on the right-most vertical)",
+    _vertical,
 )
-ANY_LINE = register_goal(
-    Goal(
-        Reading.ANY_LINE.value,
-        "every centre is on one straight line, of any direction (two centres always are)",
-        _any_line,
-        _line_batch(Reading.ANY_LINE),
-        kernel=1,
-        scaled=True,
-    )
+ANY_LINE = _line(
+    Reading.ANY_LINE, "every centre is on one straight line, of any direction (two centres always are)", _any_line
 )
-LINE_MEETS_DISCS = register_goal(
-    Goal(
-        Reading.LINE_MEETS_DISCS.value,
-        "some straight line meets every disc: the centres lie in a strip of width 2 radii",
-        _meets_discs,
-        _line_batch(Reading.LINE_MEETS_DISCS),
-        kernel=2,
-        scaled=True,
-    )
+LINE_MEETS_DISCS = _line(
+    Reading.LINE_MEETS_DISCS,
+    "some straight line meets every disc: the centres lie in a strip of width 2 radii",
+    _meets_discs,
 )
 
 
@@ -93,72 +83,57 @@ POINT = register_goal(
         "exact gathering: every robot at one and the same point (point robots only: discs there would overlap)",
         _point,
         _point_batch,
-        kernel=3,
+        kernel=KERNELS["point"],
         robots=("points",),
         scaled=True,
     )
 )
 
-EPS = {
-    "eps": Param(
-        2, "the diameter of the disc every robot must be in, in lattice units (a robot radius is q)", minimum=0
-    )
-}
+
+def _sized(name: str, says: str, key: str, param: Param, exact: Any, batch: Any) -> Goal:
+    """Register a goal whose shape test takes one length, the goal's parameter ``key`` (lattice units):
+    ``exact(points, length)`` and ``batch(pos, length)`` (positions in ``1/unit`` lattice units, the
+    length scaled alike)."""
+
+    def holds(state: Sequence[Point], model: Any) -> bool:
+        return bool(exact(state, model.setting("goal")[key]))
+
+    def positions(pos: np.ndarray, model: Any, unit: int = 1) -> np.ndarray:
+        return batch(pos, int(model.setting("goal")[key]) * unit)  # type: ignore[no-any-return]
+
+    return register_goal(Goal(name, says, holds, positions, parameters={key: param}, scaled=True))
+
+
+EPS = Param(2, "the diameter of the disc every robot must be in, in lattice units (a robot radius is q)", minimum=0)
 """The parameter of the near-gathering goals."""
-
-
-def _near(state: Sequence[Point], model: Any) -> bool:
-    return in_disc(state, model.setting("goal")["eps"])
-
-
-def _near_batch(pos: np.ndarray, model: Any, unit: int = 1) -> np.ndarray:
-    return in_disc_batch(pos, int(model.setting("goal")["eps"]) * unit)
-
 
 NEAR = (
     "every centre in one closed disc of diameter eps ([goal] eps, lattice units): the smallest enclosing "
     "circle has diameter at most eps"
 )
-NEAR_GATHERING = register_goal(Goal("near-gathering", NEAR, _near, _near_batch, parameters=EPS, scaled=True))
-EPS_CONVERGENCE = register_goal(
-    Goal(
-        "eps-convergence",
-        NEAR + "; a finite search decides whether every fair run reaches such a state, not convergence in the "
-        "limit (docs/plugins.md, Goals)",
-        _near,
-        _near_batch,
-        parameters=EPS,
-        scaled=True,
-    )
+NEAR_GATHERING = _sized("near-gathering", NEAR, "eps", EPS, in_disc, in_disc_batch)
+EPS_CONVERGENCE = _sized(
+    "eps-convergence",
+    NEAR + "; a finite search decides whether every fair run reaches such a state, not convergence in the "
+    "limit (docs/plugins.md, Goals)",
+    "eps",
+    EPS,
+    in_disc,
+    in_disc_batch,
 )
 
-RADIUS = {
-    "radius": Param(
-        0, "the circle's radius in lattice units (a robot radius is q); 0: a circle of any radius", minimum=0
-    )
-}
+RADIUS = Param(0, "the circle's radius in lattice units (a robot radius is q); 0: a circle of any radius", minimum=0)
 """The parameter of the circle goal."""
 
-
-def _circle(state: Sequence[Point], model: Any) -> bool:
-    return on_circle(state, model.setting("goal")["radius"])
-
-
-def _circle_batch(pos: np.ndarray, model: Any, unit: int = 1) -> np.ndarray:
-    return on_circle_batch(pos, int(model.setting("goal")["radius"]) * unit)
-
-
-CIRCLE = register_goal(
-    Goal(
-        "circle",
-        "every centre on the circumference of one circle, of radius [goal] radius (lattice units; 0, the "
-        "default: any radius): two distinct centres always are, three or more when not collinear and "
-        "concyclic (the four-point determinant, in integers)",
-        _circle,
-        _circle_batch,
-        parameters=RADIUS,
-        scaled=True,
-    )
+CIRCLE = _sized(
+    "circle",
+    "every centre on the circumference of one circle, of radius [goal] radius (lattice units; 0, the "
+    "default: any radius): two distinct centres always are, three or more when not collinear and "
+    "concyclic (the four-point determinant, in integers)",
+    "radius",
+    RADIUS,
+    on_circle,
+    on_circle_batch,
 )
 
 __all__ = [

@@ -26,6 +26,8 @@ Plug-in packages register goals from the same entry-point group as rule sets (``
 
 from __future__ import annotations
 
+import importlib
+import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -45,6 +47,12 @@ ROBOTS = ("discs", "points")
 
 KERNELS = {"vertical-line": 0, "any-line": 1, "line-meets-discs": 2, "point": 3}
 """The goals the compiled kernels judge, by their number (:func:`fatline_verify.check.compiled_common.at_goal`)."""
+
+NAME = re.compile(r"[a-z][a-z0-9-]{0,39}")
+"""A goal's name: lower-case letters, digits and '-' (as a plug-in's rule set or scheduler)."""
+
+BUILTIN = "fatline_verify.goals.builtin"
+"""The module that registers this package's goals."""
 
 NO_KERNEL = -1
 """The kernel number of a goal the compiled kernels do not judge (judged after, by :func:`judge_batch`)."""
@@ -83,9 +91,7 @@ _REGISTRY: dict[str, Goal] = {}
 def register_goal(goal: Goal) -> Goal:
     """Add ``goal`` (once per name: another under a taken name is refused, in one line). A plug-in's goal
     names no compiled kernel and no unknown kind of robot."""
-    from ..model.options import SLUG_NAME
-
-    if not isinstance(goal.name, str) or not SLUG_NAME.fullmatch(goal.name):
+    if not isinstance(goal.name, str) or not NAME.fullmatch(goal.name):
         raise ValueError(f"goal {goal.name!r}: expected a name of lower-case letters, digits and '-'")
     if goal.kernel is not None and KERNELS.get(goal.name) != goal.kernel:
         raise ValueError(
@@ -112,10 +118,15 @@ def register_goal(goal: Goal) -> Goal:
     return goal
 
 
+_BUILTIN: list[bool] = []
+"""Whether this package's goals are registered (one import, not one a lookup: the scalar engine asks per state)."""
+
+
 def _load(*, plugins: bool = True) -> None:
     """This package's goals, and (``plugins``) the installed plug-ins' (loaded with the rule sets)."""
-    from . import builtin  # noqa: F401  (registers the built-in goals)
-
+    if not _BUILTIN:
+        importlib.import_module(BUILTIN)  # by name, as the rule sets are: the goals import the model, not back
+        _BUILTIN.append(True)
     if plugins:
         from ..rules import registry as rules
 
@@ -191,9 +202,20 @@ def missed(name: str) -> str:
     return "no line" if str(name) in LINES else f"not at the goal ({name})"
 
 
-def reached(name: str) -> str:
-    """How a text says the goal called ``name`` is met: "the robots form a line" for the paper's."""
-    return "the robots form a line" if str(name) in LINES else "the robots are at the goal"
+def outcome_words(name: str) -> dict[str, str]:
+    """How a trace's text ends a run that met the goal called ``name``, deadlocked or cycled short of it:
+    the paper's words for its lines (as every shipped page says it), the goal's name for the others."""
+    if str(name) in LINES:
+        return {
+            "goal": f"goal reached: the robots form a line ({name})",
+            "deadlock": "deadlock: no robot is enabled and the robots do not form a line",
+            "cycle": "a fair cycle: the loop below repeats forever without forming the line",
+        }
+    return {
+        "goal": f"goal reached: the robots are at the goal ({name})",
+        "deadlock": f"deadlock: no robot is enabled and the robots are not at the goal ({name})",
+        "cycle": f"a fair cycle: the loop below repeats forever without reaching the goal ({name})",
+    }
 
 
 def kernel_of(model: Model) -> int:
@@ -239,7 +261,7 @@ __all__ = [
     "missed",
     "names",
     "of",
-    "reached",
+    "outcome_words",
     "register_goal",
     "require_for",
 ]

@@ -101,6 +101,7 @@ def frame_figure(run: Run, k: int, doc: dict[str, Any]) -> Any:
     marks = system_for(model).marks(rnd) if rnd else Marks(0)
     acting = marks.acting
     reach = _reach(model)
+    size = 0.25 if model.points else 1.0  # a point robot is drawn as a dot, not a disc of one radius
 
     clip = Circle(pts[acting], reach, fill=False, ls="--", lw=1, color="#4e79a7")
     ax.add_patch(clip)
@@ -115,14 +116,14 @@ def frame_figure(run: Run, k: int, doc: dict[str, Any]) -> Any:
     for i, (x, y) in enumerate(pts):
         face = ACTING if i == acting and rnd else ACTIVE if rnd and i in rnd.active else IDLE
         edge = BAD if i in bad else "black"
-        ax.add_patch(Circle((x, y), 1.0, facecolor=face, edgecolor=edge, lw=2.2 if i in bad else 1.0, zorder=3))
+        ax.add_patch(Circle((x, y), size, facecolor=face, edgecolor=edge, lw=2.2 if i in bad else 1.0, zorder=3))
         ax.text(x, y, f"r{i}", ha="center", va="center", zorder=4)
     for p in marks.ghosts:  # what the acting robot decided on, where it is no longer
-        ax.add_patch(Circle(_radii(model, p), 1.0, facecolor=IDLE, edgecolor="#999999", alpha=0.35, ls="--", zorder=2))
+        ax.add_patch(Circle(_radii(model, p), size, facecolor=IDLE, edgecolor="#999999", alpha=0.35, ls="--", zorder=2))
     for line in marks.remaining:  # moves under way: from where the robot is to its destination
         path = [_radii(model, p) for p in line]
         ax.plot([p[0] for p in path], [p[1] for p in path], ls="--", lw=1.2, color="#7f7f7f", zorder=4)
-        ax.add_patch(Circle(path[-1], 1.0, fill=False, ls=":", lw=1.0, edgecolor="#7f7f7f", zorder=2))
+        ax.add_patch(Circle(path[-1], size, fill=False, ls=":", lw=1.0, edgecolor="#7f7f7f", zorder=2))
     if rnd:
         for line in marks.arrows:
             path = [_radii(model, p) for p in line]
@@ -131,7 +132,7 @@ def frame_figure(run: Run, k: int, doc: dict[str, Any]) -> Any:
                     FancyArrowPatch(a, b, arrowstyle="-|>", mutation_scale=14, lw=1.6, color="#333333", zorder=5)
                 )
         for p in marks.targets:
-            ax.add_patch(Circle(_radii(model, p), 1.0, fill=False, ls=":", lw=1.2, edgecolor="#333333", zorder=2))
+            ax.add_patch(Circle(_radii(model, p), size, fill=False, ls=":", lw=1.2, edgecolor="#333333", zorder=2))
         for v in rnd.violations:
             if isinstance(v, Disconnection):
                 for ea, eb in v.lost_edges:
