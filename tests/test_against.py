@@ -13,7 +13,6 @@ import pytest
 
 from fatline_verify.lemmas.properties import Verdict
 from fatline_verify.model.config import load_model
-from fatline_verify.rules import registry
 from fatline_verify.repair.against import (
     GONE_ON_ITS_ROUNDS,
     NOT_CHECKED,
@@ -22,6 +21,7 @@ from fatline_verify.repair.against import (
     corpus_against,
     its_rounds,
 )
+from fatline_verify.rules import registry
 from fatline_verify.trace.traces import check_replay, initial_positions
 
 ROOT = Path(__file__).resolve().parent.parent
