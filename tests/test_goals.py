@@ -150,3 +150,30 @@ def test_the_prover_claims_nothing_for_a_goal_it_does_not_encode() -> None:
     assert goal_problem(load_model("paper")) == ""
     for goal in ("circle", "near-gathering", "any-line"):
         assert goal_problem(_model(goal)).endswith("this goal is not encoded, so nothing is claimed")
+
+
+def test_point_robots_initial_configurations_are_every_distinct_connected_set(monkeypatch: pytest.MonkeyPatch) -> None:
+    """For point robots the checker's kernel enumerates distinct positions only (no delta), as the Python
+    references do: the same count as brute force over every subset, pairs closer than delta included."""
+    from fatline_verify.check.initial import initial_array
+    from fatline_verify.check.initial_reference import count_by_brute_force, initial_configurations
+    from fatline_verify.model.config import Model
+    from fatline_verify.rules import registry
+    from fatline_verify.rules.decision import Decision
+
+    def stay(snapshot: object, model: object) -> Decision:  # pragma: no cover - never called
+        return Decision("stay", (0, 0), ((0, 0),), ())
+
+    registry.names()
+    monkeypatch.setitem(registry._REGISTRY, "test-points", registry.RuleSet("test-points", stay, "x", robots="points"))
+    points, discs = Model(rules="test-points"), Model()
+    assert points.points and not discs.points and points.apart2 == 1
+    for n, window in ((2, (4, 4)), (3, (4, 4)), (3, (5, 3))):
+        got = initial_array(n, window, points)
+        assert (
+            len(got) == count_by_brute_force(n, window, points) == len(list(initial_configurations(n, window, points)))
+        )
+        assert len(got) > len(initial_array(n, window, discs))
+        d2 = ((got[:, :, None, :] - got[:, None, :, :]) ** 2).sum(axis=-1)
+        off_diagonal = d2[:, ~np.eye(n, dtype=bool)]
+        assert (off_diagonal > 0).all() and (off_diagonal < discs.apart2).any()
