@@ -21,6 +21,7 @@ from fatline_verify.repair.against import (
     corpus_against,
     its_rounds,
 )
+from fatline_verify.rules import registry
 from fatline_verify.trace.traces import check_replay, initial_positions
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -48,8 +49,8 @@ def test_each_models_first_counterexamples_are_gone_under_the_repaired_rules():
     for path in sorted(CORPUS.glob("*.json")):
         source = re.match(r"(.+)-(check|prove)-", path.name)
         assert source is not None, path.name
-        if source[1] != "repaired":
-            first.setdefault(f"{source[1]} {source[2]}", path)
+        if source[1] != "repaired" and registry.of(load_model(source[1])).robots == "discs":
+            first.setdefault(f"{source[1]} {source[2]}", path)  # point robots' traces are no configurations of discs
     assert {key.split()[1] for key in first} == {"check", "prove"} and len(first) > 2
     model = load_model("repaired")
     rows = [against(model, path) for path in first.values()]

@@ -72,7 +72,8 @@ def test_shipped_models_load_and_differ_as_documented():
     for stem in set(stems) - {"paper", "paper-literal", "repaired"}:  # the variants differ from paper in one reading
         model = load_model(ROOT / "models" / f"{stem}.toml")
         if model.rules != "paper":  # a rule set of its own reads none of the paper's readings
-            assert model.options.differences() == {}, stem
+            # (its scheduler aside, and its own goal: a published algorithm's point, near-gathering)
+            assert set(model.options.differences()) <= {"scheduler", "goal"}, stem
             continue
         assert len(model.options.differences()) == 1, stem
     repaired = load_model(ROOT / "models" / "repaired.toml").options.differences()  # repairs and one reading

@@ -53,7 +53,10 @@ def _follow(ex: Exploration, start_id: int, steps: list[tuple[int, int]]) -> tup
     initial, played = system.positions(state), []
     with _kept_answers_named(ex):
         for sid, code in steps:
-            canon, order = system.canonical(system.to_array(state)[None])
+            arr = system.exact_array(state)  # a lattice state, or one a common offset makes one
+            if arr is None:
+                raise EngineDisagreement(f"witness step from state {sid}: {state} is off the lattice")
+            canon, order = system.canonical(arr[None])
             if not np.array_equal(canon[0], ex.state_array(sid)):
                 raise EngineDisagreement(f"witness step from state {sid}: {state} is not that state")
             step = system.play(state, system.action(code, order[0], state))

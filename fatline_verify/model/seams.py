@@ -57,6 +57,8 @@ class Param:
     """The values ``fatline sweep`` takes it through (each a valid value; a model file may set any valid
     one). Left empty: ``False`` and ``True`` for a flag, every whole number of a range of at most
     :data:`MAX_SWEPT`, else the parameter is not swept unless it declares them."""
+    choices: tuple[str, ...] = ()
+    """For a string parameter: the values it may take (a reading's names); empty: any string."""
 
     def __post_init__(self) -> None:
         if not isinstance(self.default, int | str):  # bool is an int
@@ -64,7 +66,7 @@ class Param:
         if not isinstance(self.values, tuple) or len(set(self.values)) != len(self.values):
             raise ValueError(f"Param values={self.values!r}: expected a tuple of distinct values")
         try:  # a declaration's mistake is the plug-in's (ValueError when it registers), not a model's
-            if not isinstance(self.default, bool) and isinstance(self.default, int):
+            if not isinstance(self.default, bool) and isinstance(self.default, int | str):
                 self.parse("default", self.default)
             for value in self.values:
                 self.parse("values", value)
@@ -76,6 +78,8 @@ class Param:
         allow); ``()`` when it declares none and its range is open or wider than :data:`MAX_SWEPT`."""
         if self.values:
             return self.values
+        if self.choices:
+            return self.choices
         if isinstance(self.default, bool):
             return (False, True)
         lo, hi = self.minimum, self.maximum
@@ -88,7 +92,7 @@ class Param:
         if isinstance(self.default, bool):
             return "true or false"
         if isinstance(self.default, str):
-            return "a string"
+            return f"one of {', '.join(self.choices)}" if self.choices else "a string"
         lo, hi = self.minimum, self.maximum
         if lo is not None and hi is not None:
             return f"a whole number {lo}..{hi}"
@@ -103,6 +107,8 @@ class Param:
         if ok and kind is int:
             assert isinstance(value, int)
             ok = (self.minimum is None or value >= self.minimum) and (self.maximum is None or value <= self.maximum)
+        if ok and kind is str and self.choices:
+            ok = value in self.choices
         if not ok:
             raise InvalidModel(f"{where}={value!r}: expected {self.expected()} ({self.doc})")
         return value  # type: ignore[return-value]

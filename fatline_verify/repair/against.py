@@ -26,6 +26,7 @@ from ..model.config import Model, model_from_mapping
 from ..model.numbers import Point
 from ..outputs import Kind as OutputKind
 from ..outputs import is_output, read_json
+from ..rules import registry
 from ..schedulers.round import play_round
 from ..schedulers.systems import system_for
 from ..trace.simulate import Outcome, Run, outcome_after
@@ -103,6 +104,8 @@ def against(model: Model, path: Path) -> Against | None:
     source = model_from_mapping(doc["model"], default_name="trace")
     if source.name == model.name:
         return None
+    if registry.of(source).robots != registry.of(model).robots:
+        return None  # a configuration of point robots is none of disc robots (they may overlap), or the reverse
     origin = doc.get("origin") or {}
     lemma = str(origin.get("lemma") or (doc.get("violation") or {}).get("property", ""))
     target = _under_scheduler(model, source)

@@ -44,6 +44,9 @@ BUILTIN = (
     "fatline_verify.rules.repaired.rule_set",
     "fatline_verify.rules.certified.rule_set",
     "fatline_verify.rules.table.rule_set",
+    "fatline_verify.rules.published.ando",
+    "fatline_verify.rules.published.gravity",
+    "fatline_verify.rules.published.universal",
 )
 """The modules that register this package's own rule sets (and the lemma that holds a rule set to its family)."""
 

@@ -86,12 +86,23 @@ class RoundSystem:
         return all(q[0] - p[0] == dx and q[1] - p[1] == dy for p, q in zip(a, b, strict=True))
 
     def exact_array(self, state: State) -> np.ndarray | None:
-        """The state on the model's lattice, or ``None`` when a robot is between its points (a rule set's
-        rational destination): such a successor is judged on its step and counted, never rounded onto the
-        lattice (``np.int64`` of ``Fraction(1, 2)`` is 0)."""
-        if any(not isinstance(c, int) and Fraction(c).denominator != 1 for p in state for c in p):
+        """The state on the model's lattice, up to translation, or ``None`` when a robot is between its
+        points (a rule set's rational destination): such a successor is judged on its step and counted,
+        never rounded onto the lattice (``np.int64`` of ``Fraction(1, 2)`` is 0).
+
+        Robots agree on axes, not on an origin, and every rule set decides from the view relative to
+        the robot (so does every goal and lemma), so a state and its translate behave alike: a state
+        whose robots all sit off the lattice by one common offset (every robot gathered at a rational
+        point; a swarm that moved by a common rational vector) is the lattice state it translates to,
+        and is explored as that one. Only a translation: no robot is moved relative to another."""
+        if not state:
+            return self.to_array(state)
+        ox, oy = Fraction(state[0][0]), Fraction(state[0][1])
+        shift = (ox - (ox.numerator // ox.denominator), oy - (oy.numerator // oy.denominator))
+        moved = [(Fraction(x) - shift[0], Fraction(y) - shift[1]) for x, y in state]
+        if any(c.denominator != 1 for p in moved for c in p):
             return None
-        return self.to_array(tuple((int(x), int(y)) for x, y in state))
+        return self.to_array(tuple((int(x), int(y)) for x, y in moved))
 
     def action(self, code: int, order: Sequence[int], state: State) -> tuple[int, ...]:
         return tuple(sorted(int(order[k]) for k in range(len(order)) if code >> k & 1))
