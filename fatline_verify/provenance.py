@@ -135,7 +135,7 @@ def _top_digest(top: str) -> str | None:
 def deciders(model: Any) -> Iterator[tuple[str, Any]]:
     """Every object that decides for ``model``, named by what it is (``"rules"``, ``"liveness"``,
     ``"algorithm"``, ``"lemma NAME"``, ``"scheduler"``, ``"goal"``): this package's own included."""
-    from .lemmas.registry import registered
+    from .lemmas.registry import judged
     from .model.options import Scheduler
     from .rules import registry
     from .schedulers.activation import round_scheduler
@@ -146,7 +146,7 @@ def deciders(model: Any) -> Iterator[tuple[str, Any]]:
         yield "liveness", rule_set.liveness.encoding
     if model.algorithm is not None:
         yield "algorithm", model.algorithm
-    for lemma in registered():
+    for lemma in judged(model):  # the step lemmas judged for it (in-family only for a rule set with a family)
         yield f"lemma {lemma.name}", lemma.violators
         yield f"lemma {lemma.name}", lemma.batch
     if not isinstance(model.options.scheduler, Scheduler):

@@ -37,4 +37,6 @@ def test_shipped_model_verdicts(capsys, tmp_path, path):
     for row in data["lemmas"]:
         if row["lemma"] not in worst or rank[row["verdict"]] < rank[worst[row["lemma"]]]:
             worst[row["lemma"]] = row["verdict"]
-    assert worst == model.expected
+    extra = {k: v for k, v in worst.items() if k not in model.expected}  # registered step lemmas (in-family)
+    assert {k: v for k, v in worst.items() if k in model.expected} == model.expected
+    assert all(v == "HOLDS_WITHIN_BOUNDS" for v in extra.values()), extra  # a shipped rule set stays in its family

@@ -89,7 +89,9 @@ def register(lemma: StepLemma) -> StepLemma:
     _REGISTRY[lemma.name] = placed
     from ..rules import registry as rules
 
-    rules.claim("lemma", lemma.name)  # the plug-in package registering it, if any
+    if not str(getattr(lemma.violators, "__module__", "")).startswith("fatline_verify."):
+        rules.claim("lemma", lemma.name)  # the plug-in package registering it, if any (not this package's own,
+        # registered while a plug-in's import first loads the built-ins)
     return placed
 
 

@@ -65,7 +65,7 @@ def test_every_model_attribute_the_page_names_exists() -> None:
     [
         ("Decision(rule, destination, path, classification=())", Decision, 4),
         ("LiveCase(name, roles, moves, encode)", LiveCase, 4),
-        ("Param(default,\ndoc, minimum=None, maximum=None, values=())", Param, 5),
+        ("Param(default,\ndoc, minimum=None, maximum=None, values=(), choices=())", Param, 6),
     ],
 )
 def test_every_signature_the_page_shows_is_the_code_s(shown: str, cls: type, count: int) -> None:

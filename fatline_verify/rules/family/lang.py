@@ -366,11 +366,10 @@ def holds(c: Cond, g: Ground) -> bool:
 
 
 def touches(d2: Number, model: Any) -> bool:
-    """Whether two discs whose centres are ``d2`` apart (squared) meet, per the ``contact`` option."""
-    from ...model.options import Contact
-
+    """Whether two discs whose centres are ``d2`` apart (squared) meet, per the ``contact`` option (``strict``:
+    touching is a collision too)."""
     limit = model.contact2
-    return bool(d2 < limit or (model.options.contact is Contact.STRICT and d2 == limit))
+    return bool(d2 < limit or (model.options.contact == "strict" and d2 == limit))
 
 
 def walk(c: Cond) -> Iterator[Cond]:
