@@ -49,8 +49,6 @@ def test_a_corpus_trace_replayed_under_another_model_shows_the_difference(capsys
         other.unlink()
 
 
-@pytest.mark.slow  # every shipped model's pages and pictures drawn again (about 650 SVG frames);
-# the default tier regenerates one model's among the others' (below)
 def _beside_docs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> tuple[Path, Path]:
     """``reports`` and ``proofs`` named as ``fatline report`` in the repository names them (relative to
     the directory it runs in: the pages' commands name them so), with the readings catalogue beside them
@@ -61,6 +59,8 @@ def _beside_docs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> tuple[Path,
     return Path("reports"), Path("proofs")
 
 
+@pytest.mark.slow  # every shipped model's pages and pictures drawn again (about 650 SVG frames);
+# the default tier regenerates one model's among the others' (below)
 def test_reports_regenerate_byte_identically(tmp_path, monkeypatch):
     out, proofs = _beside_docs(tmp_path, monkeypatch)
     for model in shipped_models():
