@@ -3,6 +3,7 @@
 python bench/prove.py [MODEL ...] [--proofs proofs]
 python bench/prove.py --startup N
 python bench/prove.py --run MODEL [--jobs J] [--lemma L] [--fresh]
+python bench/prove.py MODEL ... --against OTHER/.venv/bin/python [--jobs J] [--lemma L]
 
 The first form reads ``proofs/MODEL/results.json`` (written by ``fatline prove MODEL``) and the
 ``.smt2`` files it names where they are there (they are not in git: a ``fatline prove`` run writes
@@ -20,6 +21,11 @@ obligation at a time unless ``--jobs``; prints the wall clock per obligation,
 the solver seconds per obligation (the rows' ``seconds``) and the difference, the cost of running an
 obligation at all. ``--fresh``: into an empty directory instead (what a user gets: the shipped
 counterexample corpus, ``fatline_verify/prove/corpus.json``, is replayed first, no earlier run's).
+
+``MODEL ... --against OTHER/.venv/bin/python``: each model proved afresh by another checkout's
+interpreter (its installed package: the code before a change) and then by this one, one after the
+other on the same machine, with ``--jobs``; prints both wall clocks, their ratio over every model, and
+every row whose verdict or PROVED basis differs.
 """
 
 from __future__ import annotations
@@ -62,13 +68,17 @@ def startup(calls: int) -> None:
     )
 
 
-def run(model: str, proofs: Path, jobs: int, lemma: str | None, fresh: bool = False) -> None:
+def run(
+    model: str, proofs: Path, jobs: int, lemma: str | None, fresh: bool = False, python: str = sys.executable
+) -> dict[str, tuple[str, str]]:
+    """One timed ``fatline prove`` by the interpreter ``python`` (its installed package: this checkout's,
+    or another's with ``--against``); the verdict and basis of each row, by key."""
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "proofs"
         if not fresh:
             shutil.copytree(proofs, out)
         argv = [
-            sys.executable,
+            python,
             "-m",
             "fatline_verify.cli",
             "prove",
@@ -89,11 +99,39 @@ def run(model: str, proofs: Path, jobs: int, lemma: str | None, fresh: bool = Fa
         ran = len(rows) if lemma is None else sum(1 for r in rows if r["lemma"] == lemma)
         solver = sum(r["seconds"] for r in rows if lemma is None or r["lemma"] == lemma)
     per = wall * jobs / ran
+    who = "" if python == sys.executable else f" [{python}]"
     print(
-        f"fatline prove {model}{f' --lemma {lemma}' if lemma else ''} --jobs {jobs}{' (fresh)' if fresh else ''}: "
+        f"fatline prove {model}{f' --lemma {lemma}' if lemma else ''} --jobs {jobs}{' (fresh)' if fresh else ''}{who}: "
         f"{ran} obligations in {wall:.1f} s; "
         f"per obligation (x{jobs} jobs) {per:.2f} s of wall clock, {solver / ran:.2f} s solving, "
-        f"{per - solver / ran:.2f} s the rest"
+        f"{per - solver / ran:.2f} s the rest",
+        flush=True,
+    )
+    return {
+        f"{r['lemma']}/{r['form']}-{r.get('case', '')}.{r.get('other', '')}": (r["verdict"], r.get("basis", ""))
+        for r in rows
+        if lemma is None or r["lemma"] == lemma
+    }
+
+
+def side_by_side(models: list[str], against: str, jobs: int, lemma: str | None) -> None:
+    """Each model proved afresh by the other checkout's interpreter, then by this one, one after the
+    other on the same machine; the wall clocks side by side and every row whose verdict or basis differs."""
+    total = {"then": 0.0, "now": 0.0}
+    for model in models:
+        for who, python in (("then", against), ("now", sys.executable)):
+            t0 = time.perf_counter()
+            got = run(model, Path("proofs"), jobs, lemma, True, python)
+            total[who] += time.perf_counter() - t0
+            if who == "then":
+                then = got
+        differ = sorted(k for k in set(then) | set(got) if then.get(k) != got.get(k))
+        print(f"  {model}: {len(got)} rows, {len(differ)} differ in verdict or basis", flush=True)
+        for k in differ:
+            print(f"    {k}: {then.get(k)} -> {got.get(k)}")
+    print(
+        f"every model: {total['then']:.0f} s then, {total['now']:.0f} s now "
+        f"({total['then'] / max(total['now'], 1e-9):.2f}x)"
     )
 
 
@@ -152,8 +190,16 @@ def main() -> None:
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--lemma")
     parser.add_argument("--fresh", action="store_true", help="--run into an empty directory (no earlier results)")
+    parser.add_argument(
+        "--against",
+        metavar="PYTHON",
+        help="with MODELs: prove each afresh by this interpreter (another checkout's venv) and by this one, "
+        "side by side",
+    )
     args = parser.parse_args()
-    if args.startup:
+    if args.against:
+        side_by_side(args.models, args.against, args.jobs, args.lemma)
+    elif args.startup:
         startup(args.startup)
     elif args.run:
         run(args.run, Path(args.proofs), args.jobs, args.lemma, args.fresh)

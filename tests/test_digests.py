@@ -142,9 +142,33 @@ def test_each_kind_is_keyed_by_its_own_builder_and_rule_set():
             got = names(kind, model)
             assert ("prove/smt/family.py" in got) == (kind in ("leg",)), (kind, model.name)
             if kind in ("leg", "views"):  # the family's language and the rule set that declares it
-                assert "rules/family/lang.py" in got and "rules/family/family.py" in got, kind
                 assert ("rules/repaired/family.py" in got) == (model is repaired), kind
+            # the family language keys only the rows of a model whose rule set declares a family (its
+            # replays hold every decision to the family)
+            assert ("rules/family/lang.py" in got) == (model is repaired), kind
             assert ("prove/smt/liveness.py" in got) == (kind == "live"), (kind, model.name)
             assert ("rules/repaired/algorithm.py" in got) == (model is repaired and kind != "coverage"), kind
             assert "rules/paper/algorithm.py" in got
             assert ("prove/search.py" in got) == (kind != "coverage"), kind
+
+
+def test_a_row_is_keyed_by_code_not_by_docstrings_comments_or_layout(tmp_path):
+    """A source file counts by its syntax tree without docstrings: a docstring, a comment or a line
+    break edited leaves the digest as it was; a changed constant, name or operator changes it."""
+    base = 'from x import y\n\n\ndef f(a):\n    """Doc."""\n    return a + 1  # note\n\n\nK = 2\n"""K doc."""\n'
+    same = [
+        base.replace('"""Doc."""', '"""Another doc, longer."""'),
+        base.replace("# note", "# another note"),
+        base.replace("return a + 1", "return (\n        a + 1\n    )"),
+        base.replace('"""K doc."""\n', ""),
+    ]
+    other = [base.replace("a + 1", "a + 2"), base.replace("a + 1", "a - 1"), base.replace("K = 2", "L = 2")]
+
+    def code(text: str, name: str) -> str:
+        path = tmp_path / f"{name}.py"
+        path.write_text(text, encoding="utf-8")
+        return digests._code(path, text)
+
+    first = code(base, "base")
+    assert all(code(t, f"same{k}") == first for k, t in enumerate(same))
+    assert all(code(t, f"other{k}") != first for k, t in enumerate(other))

@@ -8,9 +8,12 @@ A row of ``proofs/MODEL/results.json`` is current only while everything that dec
   row is stored), nor another kind's own builder modules (:attr:`Kind.own`: reached only through
   dispatch, e.g. :mod:`~fatline_verify.prove.basis`'s branch per kind), nor the rule-set packages of
   ``fatline_verify.rules`` other than the paper's (every obligation encodes the paper's cases) and the
-  model's own rule set's. So an edit to the repaired rule set's legs stales only the leg rows, an
+  model's own rule set's, nor the move families' language (:data:`INFRASTRUCTURE`) for a model whose rule
+  set declares no family. So an edit to the repaired rule set's legs stales only the leg rows, an
   edit to the repaired rules only the repaired model's rows, an edit to the shared search (the
-  solver's budget, the replay, the executable model) every row that runs it;
+  solver's budget, the replay, the executable model) every row that runs it.
+  Each file counts by its code (:func:`_code`: its syntax tree without docstrings and comments), not its
+  bytes: a docstring or a comment edited stales nothing;
 - **the model**: its name, readings and parameters (:func:`fatline_verify.model.config.model_to_mapping`);
 - **the settings**: ``slots`` (the global form), ``--timeout``, ``--coverage``'s sample;
 - **the solver**: z3's distribution name and version (read from its metadata: z3 itself is not loaded,
@@ -34,7 +37,7 @@ import functools
 import hashlib
 import importlib.metadata
 import json
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -108,6 +111,30 @@ def _path(module: str) -> Path | None:
     return None
 
 
+@functools.lru_cache(maxsize=1024)
+def _parsed(path: Path, stamp: str) -> ast.Module:
+    """The syntax tree of ``path`` (``stamp``: its bytes' digest, so an edited file is parsed again)."""
+    return ast.parse(path.read_text(encoding="utf-8"))
+
+
+def _import_statements(body: list[ast.stmt]) -> Iterator[ast.Import | ast.ImportFrom]:
+    """The import statements of ``body`` and of every block nested in it (functions, classes, branches,
+    loops, ``try`` and ``with``; imports are statements, so no expression is searched), but not those under
+    ``if TYPE_CHECKING:`` (its ``else`` is followed)."""
+    for node in body:
+        if isinstance(node, ast.Import | ast.ImportFrom):
+            yield node
+        elif isinstance(node, ast.If) and isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING":
+            yield from _import_statements(node.orelse)
+        else:
+            for name in ("body", "orelse", "finalbody", "handlers", "cases"):
+                for block in getattr(node, name, ()):
+                    if isinstance(block, ast.stmt):
+                        yield from _import_statements([block])
+                    else:  # an except handler or a match case: its own body
+                        yield from _import_statements(block.body)
+
+
 @functools.cache
 def _imports(module: str, stamp: str) -> frozenset[str]:
     """The modules of this package ``module`` imports (each parent package too); ``stamp``: its file's
@@ -116,30 +143,19 @@ def _imports(module: str, stamp: str) -> frozenset[str]:
     assert path is not None
     package = module if path.name == "__init__.py" else module.rsplit(".", 1)[0]
     found: set[str] = set()
-
-    class Visitor(ast.NodeVisitor):
-        def visit_If(self, node: ast.If) -> None:
-            if isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING":
-                for statement in node.orelse:
-                    self.visit(statement)
-                return
-            self.generic_visit(node)
-
-        def visit_Import(self, node: ast.Import) -> None:
+    for node in _import_statements(_parsed(path, stamp).body):
+        if isinstance(node, ast.Import):
             found.update(a.name for a in node.names if a.name.split(".")[0] == PACKAGE)
-
-        def visit_ImportFrom(self, node: ast.ImportFrom) -> None:
-            if node.level:
-                parts = package.split(".")
-                name = ".".join(parts[: len(parts) - node.level + 1] + ([node.module] if node.module else []))
-            elif node.module and node.module.split(".")[0] == PACKAGE:
-                name = node.module
-            else:
-                return
-            found.add(name)
-            found.update(f"{name}.{a.name}" for a in node.names if _path(f"{name}.{a.name}") is not None)
-
-    Visitor().visit(ast.parse(path.read_text(encoding="utf-8")))
+            continue
+        if node.level:
+            parts = package.split(".")
+            name = ".".join(parts[: len(parts) - node.level + 1] + ([node.module] if node.module else []))
+        elif node.module and node.module.split(".")[0] == PACKAGE:
+            name = node.module
+        else:
+            continue
+        found.add(name)
+        found.update(f"{name}.{a.name}" for a in node.names if _path(f"{name}.{a.name}") is not None)
     out: set[str] = set()
     for name in found:
         parts = name.split(".")
@@ -172,12 +188,37 @@ def _own_rules(model: Any) -> frozenset[str]:
     return frozenset(p for p in _rule_packages() if p.endswith(".paper") or module.startswith(f"{p}."))
 
 
+def _has_family(model: Any) -> bool:
+    """Whether ``model``'s rule set declares a move family. One that declares none never runs the
+    family language or its admission: the ``in-family`` lemma's test and the registry's look-up stop at
+    its ``family=None``, so an edit to :data:`INFRASTRUCTURE` stales no row of its models."""
+    from ..rules import registry
+
+    return registry.of(model).family is not None
+
+
+_WALKS: dict[tuple[str, frozenset[str], bool], tuple[list[Path], tuple[str, ...]]] = {}
+""":func:`kind_sources`'s answers, each with the digests of the files it read (an edit walks again)."""
+
+
 def kind_sources(kind: str, model: Any) -> list[Path]:
-    """The source files whose bytes a ``kind`` row of ``model`` is keyed by, sorted (see the module
+    """The source files whose code a ``kind`` row of ``model`` is keyed by, sorted (see the module
     docstring for what is followed and what is left out)."""
+    own, family = _own_rules(model), _has_family(model)
+    known = _WALKS.get((kind, own, family))
+    if known is not None and tuple(_file_digest(p) for p in known[0]) == known[1]:
+        return list(known[0])
+    paths = _walk(kind, own, family)
+    _WALKS[kind, own, family] = (paths, tuple(_file_digest(p) for p in paths))
+    return list(paths)
+
+
+def _walk(kind: str, own: frozenset[str], family: bool) -> list[Path]:
     spec = KINDS[kind]
     others = frozenset().union(*(k.own for name, k in KINDS.items() if name != kind))
-    skipped_rules = _rule_packages() - _own_rules(model)
+    skipped_rules = _rule_packages() - own
+    if not family:
+        skipped_rules |= {f"{PACKAGE}.rules.{p}" for p in INFRASTRUCTURE}
 
     def left_out(module: str) -> bool:
         if module in spec.entries:
@@ -187,7 +228,7 @@ def kind_sources(kind: str, model: Any) -> list[Path]:
     seen: set[str] = set()
     todo = list(spec.entries)
     if spec.decides:
-        for package in sorted(_own_rules(model)):
+        for package in sorted(own):
             directory = ROOT.joinpath(*package.split(".")[1:])
             todo += [f"{package}.{p.stem}" if p.stem != "__init__" else package for p in directory.glob("*.py")]
     while todo:
@@ -201,10 +242,48 @@ def kind_sources(kind: str, model: Any) -> list[Path]:
     return sorted(p for p in (_path(m) for m in seen) if p is not None)
 
 
+def _canonical(node: Any) -> Any:
+    """``node`` as nested tuples of names and values: fields in their declared order, without positions,
+    without fields that are ``None`` or empty (so a field a newer Python adds, empty here, changes nothing),
+    and without docstrings (:func:`_statements`)."""
+    if isinstance(node, ast.AST):
+        out = []
+        for name in node._fields:
+            value = getattr(node, name, None)
+            if name == "body" and isinstance(value, list):
+                value = _statements(value)
+            if value is None or value == []:
+                continue
+            out.append((name, _canonical(value)))
+        return (type(node).__name__, tuple(out))
+    if isinstance(node, list):
+        return tuple(_canonical(v) for v in node)
+    return (type(node).__name__, repr(node))
+
+
+def _statements(body: list[Any]) -> list[Any]:
+    """``body`` without its bare string statements (docstrings of modules, classes, functions and
+    attributes: they do nothing when the code runs; nothing a row rests on reads ``__doc__``)."""
+    return [s for s in body if not (isinstance(s, ast.Expr) and isinstance(s.value, ast.Constant) and _text(s.value))]
+
+
+def _text(constant: ast.Constant) -> bool:
+    return isinstance(constant.value, str)
+
+
+@functools.cache
+def _code(path: Path, stamp: str) -> str:
+    """SHA-256 of the code of ``path`` (``stamp``: its bytes' digest, so an edited file is read again): its
+    syntax tree without docstrings, comments, layout or positions. A row is keyed by what its sources
+    *do*: an edit to a docstring, a comment or the formatting leaves every row current."""
+    return hashlib.sha256(repr(_canonical(_parsed(path, stamp))).encode()).hexdigest()
+
+
 def _sources_digest(paths: Iterable[Path]) -> str:
     h = hashlib.sha256()
     for path in paths:
-        h.update(path.relative_to(ROOT).as_posix().encode() + b"\0" + _file_digest(path).encode() + b"\0")
+        code = _code(path, _file_digest(path))
+        h.update(path.relative_to(ROOT).as_posix().encode() + b"\0" + code.encode() + b"\0")
     return h.hexdigest()
 
 

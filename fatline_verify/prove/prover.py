@@ -199,7 +199,7 @@ def prove(
     if not tasks:
         return []
     check_encoded(model)
-    from .basis import decided
+    from .basis import Pending, decided, resolve
     from .family import prove_family, prove_views
     from .live import prove_live
 
@@ -224,7 +224,12 @@ def prove(
             calls.append((prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out}))
     results: list[ProofResult | None] = [None] * len(tasks)
 
-    def done(k: int, result: ProofResult) -> None:
+    held: dict[int, Pending] = {}
+
+    def done(k: int, result: ProofResult | Pending) -> None:
+        if isinstance(result, Pending):  # its basis is asked after every obligation: each query once
+            held[k] = result
+            return
         results[k] = result
         if on_result:
             on_result(result)
@@ -246,6 +251,7 @@ def prove(
         overrun=overrun,
         on_start=lambda k: start(solved[k]),
     )
+    resolve(held, workers, done, run_fresh)
     for k in covers:  # no solver budget: every view is read once (the views' own processes share the cores)
         from .refine import prove_coverage
 
