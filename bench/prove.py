@@ -88,8 +88,9 @@ def run(
             "--jobs",
             str(jobs),
             "-q",
-            "--fresh",
         ]
+        if not fresh:  # the copied rows are solved again (into an empty directory there are none)
+            argv.append("--fresh")
         if lemma:
             argv += ["--lemma", lemma]
         t0 = time.perf_counter()
