@@ -325,7 +325,7 @@ def explain_lines(name: str | None = None, model: Model | None = None) -> list[s
             lines.append(f"  note: {spec.note}")
         declarer = option_owner(n)
         if declarer != MODEL:
-            lines.append(f"  an option of rule set {declarer!r} (a model file of it sets it in [options])")
+            lines.append(f"  an option of rule set {declarer!r}, set in a model file's [options] table")
         lines.append("")
     if name is None:
         lines += parameter_lines(model)
