@@ -7,6 +7,7 @@ against the API before (``options=frozenset({...})`` of names) keep working."""
 from __future__ import annotations
 
 import json
+import re
 from collections.abc import Callable
 from enum import StrEnum
 from pathlib import Path
@@ -20,7 +21,7 @@ from fatline_verify.model.option_spec import spec
 from fatline_verify.rules import registry
 from fatline_verify.rules.decision import stay
 from fatline_verify.sweep.space import default_vary
-from tests.plugins.cli import OPTIONED, fatline, without_plugin
+from tests.plugins.cli import OPTIONED, ROOT, fatline, without_plugin
 
 TURN_LEFT = OPTIONED / "turn-left.toml"
 
@@ -184,3 +185,19 @@ def test_an_import_of_a_moved_reading_says_where_it_is() -> None:
     from fatline_verify.rules.paper.options import Quadrants
 
     assert options.CATALOGUE["quadrants"].enum is Quadrants
+
+
+def test_the_page_s_example_declares_its_option(install_site: Callable[[Path], None]) -> None:
+    """docs/plugins.md's option example, run as a plug-in module would be: a model file sets its option, the
+    rules read it, and a misspelt one is refused with the words the page shows."""
+    page = (ROOT / "docs" / "plugins.md").read_text(encoding="utf-8")
+    (code,) = [b for b in re.findall(r"```python\n(.*?)```", page, re.S) if "turn_rules" in b]
+    exec(compile(code, "docs/plugins.md", "exec"), {"__name__": "turn_rules"})
+    model = model_from_mapping({"name": "t", "rules": "turn-step", "options": {"turn": "left"}})
+    assert registry.decide([(-3, 0)], model).destination == (-1, 0)
+    assert not registry.decide([(3, 0)], model).moves
+    shown = re.search(r'\("(options\.trun=.*?)"\)', page.replace("\n  ", " "))
+    assert shown is not None
+    with pytest.raises(InvalidModel) as refused:
+        model_from_mapping({"name": "t", "rules": "turn-step", "options": {"trun": "left"}})
+    assert str(refused.value) == shown.group(1)
