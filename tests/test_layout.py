@@ -68,6 +68,15 @@ def test_the_import_graph_has_no_cycle() -> None:
     assert graph.number_of_nodes() > 50  # the walk saw the package
 
 
+def test_the_option_catalogue_imports_no_rule_set() -> None:
+    """Rule sets declare their options into the model layer (``RuleSet(options=...)``), not the other way."""
+    graph = import_graph()
+    for module in ("fatline_verify.model.options", "fatline_verify.model.option_spec"):
+        reached = nx.descendants(graph, module)
+        assert not any(m.startswith("fatline_verify.rules") for m in reached), sorted(reached)
+    assert "fatline_verify.model.option_spec" in nx.descendants(graph, "fatline_verify.model.options")  # seen
+
+
 def test_the_graph_sees_function_level_imports(tmp_path: Path) -> None:
     """The walk is not fooled by an import inside a function (the kind that hides a cycle)."""
     edges = import_graph().edges

@@ -56,7 +56,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         named = scheduler_named(args.scheduler, where="scheduler")
         if named != model.options.scheduler:  # its own parameters at their defaults, not the model's scheduler's
             kept = tuple(seam for seam in model.settings if seam[0] != "scheduler")
-            model = replace(model, options=replace(model.options, scheduler=named), settings=kept)
+            model = replace(model, options=model.options.with_(scheduler=named), settings=kept)
     scheduler = model.options.scheduler
     word = system_for(model).step_word
     lines = [f"model {model.describe()}"]

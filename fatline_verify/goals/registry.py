@@ -36,6 +36,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InvalidModel
+from ..model import options
 from ..model.seams import Param
 
 Model = Any
@@ -137,6 +138,10 @@ def names() -> tuple[str, ...]:
     """Every registered goal's name (plug-ins loaded), built-ins first, in registration order."""
     _load()
     return tuple(_REGISTRY)
+
+
+options.NAMED_BY["goal"] = names
+"""A model's ``goal`` option names a registered goal (an error lists every one)."""
 
 
 def get(name: str, where: str = "options.goal") -> Goal:

@@ -18,8 +18,10 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InvalidModel
+from ..goals import registry as goals
 from ..lemmas.properties import CHECKED
 from ..outputs import SLUG, NotReadable, read_regular
+from ..rules import registry
 from .numbers import MAX_DIGITS, Number, Point, format_number, normalize, parse_number
 from .options import Options, Scheduler, Visibility, is_repaired, options_from_mapping
 from .seams import SEAMS, Param, Settings, Value, declared, filled, parse_table, with_values
@@ -78,8 +80,6 @@ class Bounds:
 def _robots(rules: str) -> str:
     """The robots of the rule set called ``rules`` (``"discs"`` or ``"points"``); the paper's discs for a name
     no rule set has (a model being built is checked elsewhere)."""
-    from ..rules import registry
-
     try:
         return registry.get(rules or "paper").robots
     except InvalidModel:
@@ -227,12 +227,8 @@ def seam_owner(model: Model, seam: str, scheduler: str | None = None) -> Any:
     """The registered object whose parameters the ``seam`` table sets: the model's round scheduler
     (``scheduler``: another one's name) or its rule set; ``None`` for ASYNC, which declares none."""
     if seam == "rules":
-        from ..rules import registry
-
         return registry.of(model)
     if seam == "goal":
-        from ..goals import registry as goals
-
         return goals.of(model)
     name = str(scheduler or model.options.scheduler)
     if name == Scheduler.ASYNC.value:
@@ -336,14 +332,17 @@ def model_from_mapping(data: dict[str, object], *, source: str = "", default_nam
         if key in params_raw:
             params[key] = params_raw[key]
     parameters = Parameters(**params)  # type: ignore[arg-type]
-    options = options_from_mapping(data.get("options", {}))  # type: ignore[arg-type]
+    options_raw = data.get("options", {})
     rules_raw, rules_table = data.get("rules"), None
     if isinstance(rules_raw, dict):  # [rules]: the rule set's name, then its own parameters
         rules_table = {k: v for k, v in rules_raw.items() if k != "name"}
         rules_raw = rules_raw.get("name")
         if not isinstance(rules_raw, str):
             raise InvalidModel(f"rules.name={rules_raw!r}: expected the name of a rule set in the [rules] table")
-    rules = _rules(rules_raw, options, data.get("options", {}))  # type: ignore[arg-type]
+    if rules_raw is not None and isinstance(options_raw, dict):  # a named rule set: its options, before any reading
+        _accepted(_rule_set(rules_raw), options_raw)
+    options = options_from_mapping(options_raw)  # type: ignore[arg-type]
+    rules = _rules(rules_raw, options, options_raw)  # type: ignore[arg-type]
     options = _goal(rules, options, data.get("options", {}))  # type: ignore[arg-type]
     if not isinstance(options.scheduler, Scheduler):
         from ..schedulers.activation import scheduler_named
@@ -406,33 +405,39 @@ def _goal(rules: str, options: Options, given: dict[str, object]) -> Options:
     """``options`` with the goal the model means: the one its file sets, else the one its rule set declares
     (``RuleSet(goal=...)``), else the paper's default; a registered goal (one line naming every goal
     otherwise) that means something for the rule set's robots (:func:`~fatline_verify.goals.registry.require_for`)."""
-    from ..goals import registry as goals
-    from ..rules import registry
-
     rule_set = registry.get(rules)
     if "goal" not in (given if isinstance(given, dict) else {}) and rule_set.goal is not None:
-        from .options import parse_reading
-
-        options = replace(options, goal=parse_reading("goal", rule_set.goal))  # type: ignore[arg-type]
+        options = options.with_(goal=rule_set.goal)
         goals.get(str(options.goal), where=f"rule set {rules!r}: goal")
     goals.require_for(Model(options=options, rules=rules), rule_set.robots, rules)
     return options
 
 
-def _rules(raw: object, options: Options, given: dict[str, object]) -> str:
-    """The rule set a model names (or implies), checked against the registry; every option the file
-    sets must be one the rule set reads."""
-    from ..rules import registry
-
-    if raw is not None and not isinstance(raw, str):
+def _rule_set(raw: object) -> Any:
+    """The registered rule set a model file names (``rules``), or a one-line :class:`InvalidModel`."""
+    if not isinstance(raw, str):
         raise InvalidModel(f"rules={raw!r}: expected the name of a rule set ({', '.join(registry.names())})")
-    rule_set = registry.get(raw or implied_rules(options))
+    return registry.get(raw)
+
+
+def _accepted(rule_set: Any, given: dict[str, object]) -> None:
+    """Refuse, in one line naming it and the rule set, an option ``given`` sets that ``rule_set`` neither
+    declares nor reads (:meth:`~fatline_verify.rules.registry.RuleSet.accepts`)."""
+    from .options import MODEL_OPTIONS
+
     for key in given:
         if not rule_set.accepts(key):
             raise InvalidModel(
                 f"options.{key}={given[key]!r}: not an option of rule set {rule_set.name!r}; "
-                f"expected one of {', '.join(sorted(rule_set.options | registry.MODEL_OPTIONS))}"
+                f"expected one of {', '.join(sorted({*rule_set.reads(), *MODEL_OPTIONS}))}"
             )
+
+
+def _rules(raw: object, options: Options, given: dict[str, object]) -> str:
+    """The rule set a model names (or implies), checked against the registry; every option the file
+    sets must be one the rule set reads."""
+    rule_set = _rule_set(raw) if raw is not None else registry.get(implied_rules(options))
+    _accepted(rule_set, given)
     return rule_set.name
 
 
@@ -515,8 +520,6 @@ def model_to_mapping(model: Model) -> dict[str, object]:
 
 def declared_options(model: Model) -> dict[str, str]:
     """The options that mean something for ``model``: under its scheduler, and read by its rule set."""
-    from ..rules import registry
-
     rule_set = registry.of(model)
     return {k: v for k, v in model.options.as_dict().items() if rule_set.accepts(k)}
 

@@ -25,9 +25,10 @@ from matplotlib.patches import Circle, FancyArrowPatch, Rectangle
 
 from ..goals.registry import missed
 from ..model.config import Model
-from ..model.options import Bands, Quadrants, Visibility
+from ..model.options import Visibility
 from ..rules import registry
 from ..rules.paper.algorithm import Band
+from ..rules.paper.options import Bands, Quadrants
 from ..schedulers.base import Marks
 from ..schedulers.round import Collision, Disconnection, RmaMoved
 from ..schedulers.systems import system_for

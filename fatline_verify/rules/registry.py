@@ -1,8 +1,9 @@
 """Rule sets by name: what a robot decides from what it sees, one registered entry each.
 
-A model file names its rule set at the top level (``rules = "paper"``). A rule set declares the
-options it reads (the paper's readings belong to the paper's rule set; a rule set of one's own reads
-none of them), its decision function, how its pictures are drawn and whether the prover encodes it:
+A model file names its rule set at the top level (``rules = "paper"``). A rule set declares its own
+options and names the others it reads (``RuleSet(options=...)``: the paper's readings belong to the paper's
+rule set, the repairs to the repaired one; a rule set of one's own reads none of them, and may declare
+options of its own), its decision function, how its pictures are drawn and whether the prover encodes it:
 ``fatline prove`` refuses a rule set without an encoding, by construction, rather than proving it
 against another rule set's case table.
 
@@ -21,6 +22,9 @@ from typing import Any
 
 from ..errors import InvalidModel
 from ..lemmas.properties import CHECKED, SAFETY, Lemma
+from ..model import options as catalogue
+from ..model.option_spec import OptionSpec
+from ..model.options import MODEL_OPTIONS
 from ..model.seams import Param, declared
 
 Model = Any
@@ -31,9 +35,6 @@ Decide = Callable[[Sequence[Point], Model], Any]
 """``decide(snapshot, model) -> Decision``: the robot at the origin, ``snapshot`` the robots it sees
 (relative positions, lattice units). The result needs ``rule``, ``destination``, ``path`` and
 ``moves`` as :class:`fatline_verify.rules.paper.algorithm.Decision` has them."""
-
-MODEL_OPTIONS = frozenset({"scheduler", "motion", "timing", "contact", "goal"})
-"""Options every rule set takes: the scheduler and the round's semantics, not a rule's reading."""
 
 GROUP = "fatline.plugins"
 """The entry-point group a plug-in package declares."""
@@ -143,9 +144,13 @@ class RuleSet:
     name: str
     decide: Decide = field(repr=False)
     summary: str
-    options: frozenset[str] = frozenset()
-    """The options of the catalogue it reads, beside :data:`MODEL_OPTIONS`; a model setting any other
-    option is refused."""
+    options: tuple[OptionSpec | str, ...] | frozenset[str] = ()
+    """The options it reads beside :data:`MODEL_OPTIONS`, in the order ``fatline explain`` lists them: each
+    one it declares, an :class:`~fatline_verify.model.option_spec.OptionSpec` (``spec(name, enum, quote,
+    readings)``: its own, added to the catalogue when it registers), or the name of one the model layer or
+    an earlier rule set declares (``"visibility"``; the repaired rule set names the paper's readings). A
+    model setting any other option is refused; its decision function reads each as ``model.options.NAME``.
+    (A frozenset of names, the API before rule sets declared options, still works.)"""
     prover: Encoding | str | None = None
     """The prover's encoding of these rules, an :class:`Encoding` of this rule set's own ``decide``
     (the paper's decision cases; the repaired rules' legs); ``None``: ``fatline prove`` refuses the rule
@@ -193,6 +198,11 @@ class RuleSet:
     def check_setting(self) -> None:
         """Refuse, in one line, a setting that names no lemma of the checker or prunes one that does not apply."""
         declared(self)  # parameters a dict of names to Param, or one line
+        if isinstance(self.options, str) or not isinstance(self.options, tuple | list | set | frozenset):
+            raise ValueError(
+                f"rule set {self.name!r}: options={self.options!r}: expected a tuple of option declarations "
+                "(fatline_verify.model.option_spec.spec) and names"
+            )
         if self.robots not in ("discs", "points"):
             raise ValueError(f"rule set {self.name!r}: robots={self.robots!r}: expected 'discs' or 'points'")
         if self.goal is not None and not isinstance(self.goal, str):
@@ -233,9 +243,17 @@ class RuleSet:
     """Parameters of its own (:mod:`fatline_verify.model.seams`), set in a model file's ``[rules]``
     table; its decision function reads their values as ``model.setting("rules")``."""
 
+    def reads(self) -> tuple[str, ...]:
+        """The names of the options it reads beside :data:`MODEL_OPTIONS` (its own and the others it names)."""
+        return tuple(entry.name if isinstance(entry, OptionSpec) else entry for entry in self.options)
+
+    def own_options(self) -> tuple[OptionSpec, ...]:
+        """The options it declares."""
+        return tuple(entry for entry in self.options if isinstance(entry, OptionSpec))
+
     def accepts(self, option: str) -> bool:
         """Whether a model of this rule set may set ``option``."""
-        return option in MODEL_OPTIONS or option in self.options
+        return option in MODEL_OPTIONS or option in self.reads()
 
 
 _REGISTRY: dict[str, RuleSet] = {}
@@ -245,11 +263,14 @@ _loaded: set[str] = set()
 
 def register(rule_set: RuleSet) -> RuleSet:
     """Add ``rule_set`` (once per name: registering another under a taken name is an error; a setting
-    that names a lemma the checker does not have is one too, :meth:`RuleSet.check_setting`)."""
+    that names a lemma the checker does not have is one too, :meth:`RuleSet.check_setting`) and the options
+    it declares (:func:`fatline_verify.model.options.declare`: one it names must be declared already, one it
+    declares must have a name of its own)."""
     rule_set.check_setting()
     known = _REGISTRY.get(rule_set.name)
     if known is not None and known != rule_set:
         raise ValueError(f"rule set {rule_set.name!r} is registered twice")
+    catalogue.declare(rule_set.options, rule_set.name)
     _REGISTRY[rule_set.name] = rule_set
     claim("rules", rule_set.name)
     return rule_set
@@ -265,6 +286,10 @@ def _load(*, plugins: bool = True) -> None:
     if plugins and "plugins" not in _loaded:
         _loaded.add("plugins")
         load_plugins()
+
+
+catalogue.add_completer(lambda: _load(plugins=False))
+"""Reading the option catalogue loads this package's rule sets first, so that it lists the options they declare."""
 
 
 @dataclass(frozen=True, slots=True)

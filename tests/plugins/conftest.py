@@ -16,10 +16,12 @@ from tests.plugins.cli import SITE
 @pytest.fixture
 def install_site(monkeypatch: pytest.MonkeyPatch) -> Iterator[Callable[[Path], None]]:
     """``install(site)``: put ``site`` (a package and its ``.dist-info`` with the entry points) on the
-    path and load the plug-ins; at the end of the test, the rule sets, lemmas, schedulers and goals registered
-    and the ``toy_fatline_plugin`` modules imported since are forgotten (no other test sees them)."""
+    path and load the plug-ins; at the end of the test, the rule sets, lemmas, schedulers and goals registered,
+    the options declared and the installed packages' modules imported since are forgotten (no other test sees
+    them)."""
     from fatline_verify.goals import registry as goals
     from fatline_verify.lemmas import registry as lemmas
+    from fatline_verify.model import options
     from fatline_verify.rules import registry
     from fatline_verify.schedulers import activation
 
@@ -31,18 +33,21 @@ def install_site(monkeypatch: pytest.MonkeyPatch) -> Iterator[Callable[[Path], N
         activation.ROUND_SCHEDULERS,
         registry._PROVIDERS,
         goals._REGISTRY,
+        options._DECLARED,
     )
     saved = [(reg, dict(reg)) for reg in registries]
+    packages = {"toy_fatline_plugin"}
 
     def install(site: Path) -> None:
         monkeypatch.syspath_prepend(str(site))
+        packages.update(p.name for p in site.iterdir() if (p / "__init__.py").is_file())
         registry.load_plugins()
 
     yield install
     for reg, before in saved:
         reg.clear()
         reg.update(before)
-    for name in [m for m in sys.modules if m.split(".")[0] == "toy_fatline_plugin"]:
+    for name in [m for m in sys.modules if m.split(".")[0] in packages]:
         del sys.modules[name]
 
 

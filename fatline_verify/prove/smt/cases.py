@@ -25,10 +25,12 @@ import z3
 
 from ...model.config import Model
 from ...model.numbers import Number
-from ...model.options import (
+from ...model.options import Contact, Visibility
+from ...rules.paper.algorithm import Band, Rule
+from ...rules.paper.cases import Branch, Case, candidates
+from ...rules.paper.options import (
     BandOverlap,
     Bands,
-    Contact,
     PathShape,
     PsiRight,
     Quadrants,
@@ -37,10 +39,7 @@ from ...model.options import (
     Scenario4FreePath,
     SearchBound,
     Vacant,
-    Visibility,
 )
-from ...rules.paper.algorithm import Band, Rule
-from ...rules.paper.cases import Branch, Case, candidates
 
 Term: TypeAlias = z3.ArithRef
 Pt = tuple[Term, Term]

@@ -38,9 +38,10 @@ import z3
 
 from ...lemmas.properties import Lemma
 from ...model.config import Model
-from ...model.options import PathShape, Scheduler, Timing
+from ...model.options import Scheduler, Timing
 from ...rules.paper.algorithm import Band
 from ...rules.paper.cases import Case
+from ...rules.paper.options import PathShape
 from .cases import Arith, Decided, Pt, apart, bands, close, d2, decide_group, roles_for, same, sees, view_reach
 
 
@@ -297,7 +298,7 @@ def _repaired(
     own conditions: ``align``: a witness m that r sees, right of r, and (universal) no robot r sees right
     of m; ``approach``: psi_right (from the case's witness w) more than 2 radii right of r; ``contract``:
     any step along r's vertical of at most one radius."""
-    from ...model.options import PsiRight
+    from ...rules.paper.options import PsiRight
 
     zero = ar.num(0)
     cons = list(dr.constraints)

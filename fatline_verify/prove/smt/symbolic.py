@@ -17,7 +17,9 @@ import z3
 
 from ...model.config import Model
 from ...model.numbers import Number
-from ...model.options import (
+from ...model.options import Visibility
+from ...rules.paper.algorithm import Band, Rule
+from ...rules.paper.options import (
     BandOverlap,
     Bands,
     PathShape,
@@ -31,9 +33,7 @@ from ...model.options import (
     SearchOrder,
     Uncovered,
     Vacant,
-    Visibility,
 )
-from ...rules.paper.algorithm import Band, Rule
 
 RULES = list(Rule)
 

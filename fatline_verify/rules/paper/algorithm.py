@@ -17,7 +17,8 @@ from enum import StrEnum
 from ...model.config import Model
 from ...model.geometry import Path, dist2, point_rect_dist2
 from ...model.numbers import Number, Point
-from ...model.options import (
+from ..decision import ORIGIN, Decision
+from .options import (
     BandOverlap,
     Bands,
     PathShape,
@@ -32,7 +33,6 @@ from ...model.options import (
     Uncovered,
     Vacant,
 )
-from ..decision import ORIGIN, Decision
 
 
 class Band(StrEnum):

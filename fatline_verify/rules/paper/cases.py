@@ -29,8 +29,8 @@ from math import floor
 
 from ...model.config import Model
 from ...model.numbers import Point
-from ...model.options import Scenario4FreePath, Scenario4Guard, SearchBound, SearchOrder, Uncovered
 from .algorithm import Band, Decision, Rule, _scenario_4, free_path
+from .options import Scenario4FreePath, Scenario4Guard, SearchBound, SearchOrder, Uncovered
 
 
 class Branch(StrEnum):

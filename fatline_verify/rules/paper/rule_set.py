@@ -1,11 +1,8 @@
 """The paper rule set's registration: its options, decision function and prover encoding."""
 
-from ...model.options import CATALOGUE
-from ..registry import MODEL_OPTIONS, Encoding, Liveness, RuleSet, register, register_encoding
+from ..registry import Encoding, Liveness, RuleSet, register, register_encoding
 from .algorithm import decide
-
-READINGS = frozenset(name for name, spec in CATALOGUE.items() if not spec.repair) - MODEL_OPTIONS
-"""The paper's open points (``fatline explain``): the options this rule set reads."""
+from .options import READINGS
 
 CASES = register_encoding(Encoding("paper", "the paper's decision cases", decide))
 """The prover's encoding of the paper's rules: obligations per decision case (:mod:`fatline_verify.prove.smt.cases`)."""

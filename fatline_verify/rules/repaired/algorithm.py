@@ -78,9 +78,10 @@ from typing import Any
 from ...model.config import Model
 from ...model.geometry import Path, dist2, path_point_dist2, segment_segment_dist2
 from ...model.numbers import Number, Point
-from ...model.options import Contact, PathShape
+from ...model.options import Contact
 from ..decision import ORIGIN, Decision
 from ..paper.algorithm import Rule, _path, _stay
+from ..paper.options import PathShape
 from .options import (
     RepairApproach,
     RepairClear,

@@ -1,7 +1,7 @@
 """The repairs' options: changes to the paper's algorithm (:mod:`fatline_verify.rules.repaired.algorithm`), not readings
 of its text. Each is ``off`` by default and left out of a model's data at ``off``, so the paper's
-models keep their fingerprints; :data:`fatline_verify.model.options.CATALOGUE` lists them after the
-paper's open points."""
+models keep their fingerprints. The repaired rule set declares them (:mod:`.rule_set`), and so
+:data:`fatline_verify.model.options.CATALOGUE` lists them after the paper's open points."""
 
 from __future__ import annotations
 

@@ -3,16 +3,17 @@
 from collections.abc import Sequence
 from typing import Any
 
-from ...model.options import CATALOGUE
 from ..decision import Decision
 from ..paper.algorithm import paper_decide
-from ..paper.rule_set import READINGS
+from ..paper.options import READINGS
 from ..registry import Encoding, RuleSet, register, register_encoding
 from .algorithm import repair
 from .family import family
+from .options import REPAIR_SPECS
 
-REPAIRS = frozenset(name for name, spec in CATALOGUE.items() if spec.repair)
-"""The repair options."""
+OPTIONS = (*(entry if isinstance(entry, str) else entry.name for entry in READINGS), *REPAIR_SPECS)
+"""What it reads: the paper's readings and the model layer's options, by name (the paper's rule set
+declares them), then the repairs, which it declares."""
 
 
 def decide(snapshot: Sequence[Any], model: Any) -> Decision:
@@ -30,7 +31,7 @@ REPAIRED = register(
         "repaired",
         decide,
         "Not the paper: its LineForm() with the named repairs of the model's repair_* options.",
-        options=READINGS | REPAIRS,
+        options=OPTIONS,
         prover=LEGS,
         bands=True,
         family=family,
