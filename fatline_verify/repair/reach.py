@@ -50,6 +50,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import replace
 from enum import StrEnum
+from fractions import Fraction
 from itertools import combinations, product
 
 from ..check.initial import initial_array
@@ -57,14 +58,16 @@ from ..model.config import Model
 from ..model.numbers import Point
 from ..model.options import Goal
 from ..rules.decision import ORIGIN
-from ..rules.repaired.algorithm import allowed, locked
+from ..rules.family.family import LegClass, MoveFamily
+from ..rules.family.lang import Ground, holds
+from ..rules.repaired import whatif
 from ..rules.repaired.options import RepairProgress
 from ..schedulers.activation import scheduler_for
 from ..schedulers.round import closest_dist2, collides, collisions, disconnection, rma_violations, snapshot
 
 State = tuple[Point, ...]
-Leg = tuple[Point, bool]
-"""A leg's end relative to the robot, and whether it is the bottom's contraction (``bottom_up``)."""
+Leg = tuple[Point, str]
+"""A leg's end relative to the robot, and its class in the family (:func:`move_family`)."""
 Moves = tuple[tuple[int, Point], ...]
 """One round: each mover's index in the state and the end of its leg, relative to it."""
 
@@ -104,18 +107,45 @@ def check_kinds(kinds: Iterable[str]) -> None:
         )
 
 
-def _shapes(rho: int, kinds: frozenset[Kind]) -> list[Point]:
-    """Every leg end (relative, lattice units) any robot of a family with ``kinds`` may take, whatever it sees."""
-    out: list[Point] = []
-    if Kind.RIGHT in kinds:
-        out += [(k, 0) for k in range(1, rho + 1)]
-    if Kind.VERTICAL in kinds:
-        out += [(0, k) for k in range(-rho, rho + 1) if k]
-    if kinds & EXCLUSIVE:
-        out += [(-k, 0) for k in range(1, rho + 1)]
-    if Kind.CORNER in kinds:
-        out += [(k, j) for k in range(1, rho + 1) for j in range(-rho, rho + 1) if j]
-    return out
+def move_family(model: Model, kinds: frozenset[Kind] = PROVED) -> MoveFamily:
+    """The family of ``kinds`` on ``model``'s lattice (:func:`fatline_verify.rules.repaired.whatif.family`): its
+    guards are the legs' one statement, read here by the concrete interpreter; the ``left-alone`` legs as
+    long as :func:`left_alone_reach` allows."""
+    q = model.radius
+    key = (q, model.view2, model.options.timing, model.options.contact, kinds)
+    got = _FAMILIES.get(key)
+    if got is None:
+        what = [k.value for k in kinds if k not in PROVED]
+        units = left_alone_reach(model, kinds) if Kind.LEFT_ALONE in kinds else None
+        got = _FAMILIES[key] = whatif.family(what, q, units)
+    return got
+
+
+_FAMILIES: dict[tuple[object, ...], MoveFamily] = {}
+
+
+def shapes(family: MoveFamily, model: Model) -> tuple[tuple[Point, LegClass], ...]:
+    """Every lattice end of ``model`` of each class's shape (at most ``max_step``), in the order legs are
+    tried: class by class, shortest first; each end with its classes in order."""
+    key = (id(family), model.radius)
+    got = _SHAPES.get(key)
+    if got is None or got[0] is not family:
+        rho = model.radius
+        box = int(Fraction(family.max_step) * rho) + 1
+        ends = [(a, b) for a in range(-box, box + 1) for b in range(-box, box + 1) if (a, b) != ORIGIN]
+        out: list[tuple[Point, LegClass]] = []
+        for cls in family.classes:
+            mine = [
+                e
+                for e in ends
+                if family.within_step(e, model) and holds(cls.shape, Ground(model, (), {"me": ORIGIN, "end": e}))
+            ]
+            out += [(e, cls) for e in sorted(mine, key=lambda e: (abs(e[0]), e[1] if not e[0] else abs(e[1])))]
+        got = _SHAPES[key] = (family, tuple(out))
+    return got[1]
+
+
+_SHAPES: dict[tuple[int, int], tuple[MoveFamily, tuple[tuple[Point, LegClass], ...]]] = {}
 
 
 _REACH: dict[tuple[object, ...], int] = {}
@@ -124,10 +154,10 @@ _REACH: dict[tuple[object, ...], int] = {}
 def left_alone_reach(model: Model, kinds: frozenset[Kind]) -> int:
     """The longest ``left-alone`` leg, in lattice units (at most one radius): the greatest ``K`` such that no
     robot the mover does not see (squared distance beyond ``rad_v``), taking any leg of ``kinds`` in the
-    same round (:func:`_shapes`, whatever it sees: a stronger test), comes within a collision of the
-    mover's path to ``(-k, 0)`` for any ``k <= K``; by the model's own ``closest_dist2`` and ``collides``
-    (exact integers). A robot it does not see may be beyond ``2 + k + |leg|`` radii of the mover only,
-    so the search covers the robots within 5 radii (a leg is at most sqrt(2) < 2 radii).
+    same round (every end of the family's shapes, whatever it sees: a stronger test), comes within a
+    collision of the mover's path to ``(-k, 0)`` for any ``k <= K``; by the model's own ``closest_dist2``
+    and ``collides`` (exact integers). A robot it does not see may be beyond ``2 + k + |leg|`` radii of the
+    mover only, so the search covers the robots within 5 radii (a leg is at most sqrt(2) < 2 radii).
 
     With the proved legs and left legs the answer is one radius (unit legs: ``d > rad_v >= 4`` radii
     minus two legs of at most one radius each is more than two radii); with corner legs (sqrt(2) radii)
@@ -138,7 +168,8 @@ def left_alone_reach(model: Model, kinds: frozenset[Kind]) -> int:
     got = _REACH.get(key)
     if got is not None:
         return got
-    legs = _shapes(rho, kinds)
+    widest = whatif.family([k.value for k in kinds if k not in PROVED], rho)  # left-alone one radius long
+    legs = sorted({e for e, _ in shapes(widest, model)})
     far = 25 * rho * rho  # (2 + 1 + 2)^2 radii^2: beyond it no leg of at most 2 radii meets one of 1 radius
     box = 5 * rho
     around = [
@@ -189,34 +220,20 @@ def family_model(model: Model, kinds: frozenset[Kind]) -> Model:
 
 
 def family_legs(snap: tuple[Point, ...], model: Model, kinds: frozenset[Kind] = PROVED) -> tuple[Leg, ...]:
-    """Every leg of ``kinds`` that a robot seeing ``snap`` may make (module docstring), in lattice units
-    of ``model`` (one radius is ``model.radius`` units)."""
-    if not snap or locked(snap):
+    """Every leg of ``kinds`` that a robot seeing ``snap`` may make: each lattice end of a class's shape whose
+    guard holds there (:func:`move_family`, read by the concrete interpreter), unless the family holds the
+    robot; in lattice units of ``model`` (one radius is ``model.radius`` units), each end once with the
+    first class admitting it."""
+    family = move_family(model, kinds)
+    if family.held(snap, model):
         return ()
-    rho = model.radius
-    right = int(max(c[0] for c in snap))  # lattice states: whole units
-    above = [c[1] for c in snap if c[0] == 0 and c[1] > 0]
-    below = [c[1] for c in snap if c[0] == 0 and c[1] < 0]
-    room = int(min(above)) - 3 * rho if above else 0
-    tries: list[Leg] = []
-    if Kind.RIGHT in kinds:
-        tries += [((k, 0), False) for k in range(1, min(rho, right) + 1)]
-    if Kind.VERTICAL in kinds:
-        if not above:
-            tries += [((0, k), False) for k in range(-rho, rho + 1) if k]
-        elif not below:
-            tries += [((0, k), True) for k in range(1, min(rho, room) + 1)]
-    if Kind.LEFT in kinds and right > 0:  # a robot that may be on the RMA may not leave it (Lemma 3)
-        tries += [((-k, 0), False) for k in range(1, rho + 1)]
-    if Kind.LEFT_ALONE in kinds and right > 0 and not any(c[0] == 0 for c in snap):  # alone on its vertical
-        tries += [((-k, 0), False) for k in range(1, left_alone_reach(model, kinds) + 1)]
-    if Kind.CORNER in kinds:
-        for k in range(1, min(rho, right) + 1):
-            if below and not above:
-                tries += [((k, -j), False) for j in range(1, rho + 1)]
-            elif above and not below:
-                tries += [((k, j), True) for j in range(1, min(rho, room) + 1)]
-    return tuple((end, up) for end, up in tries if allowed(end, (ORIGIN, end), snap, model, bottom_up=up))
+    out: list[Leg] = []
+    taken: set[Point] = set()
+    for end, cls in shapes(family, model):
+        if end not in taken and holds(cls.guard, Ground(model, snap, {"me": ORIGIN, "end": end})):
+            taken.add(end)
+            out.append((end, cls.name))
+    return tuple(out)
 
 
 def canonical(state: Iterable[Point]) -> State:
@@ -363,7 +380,9 @@ __all__ = [
     "check_kinds",
     "family_legs",
     "left_alone_reach",
+    "move_family",
     "refuse",
+    "shapes",
     "starts",
     "what_if_text",
 ]

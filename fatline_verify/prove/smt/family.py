@@ -49,6 +49,7 @@ from ...model.config import Model
 from ...model.options import Timing
 from ...rules.family.family import REST, MoveFamily
 from ...rules.family.lang import (
+    XY,
     And,
     Clear,
     Cmp,
@@ -95,6 +96,8 @@ class Scene:
 
 
 def _pt(p: LPt, env: Mapping[str, Pt], ar: Arith) -> Pt:
+    if isinstance(p, XY):
+        return (_num(p.x, env, ar), _num(p.y, env, ar))
     x, y = env[p.name]
     if p.offset[0] or p.offset[1]:
         return (x + ar.num(p.offset[0]), y + ar.num(p.offset[1]))
@@ -173,8 +176,8 @@ def assumed(
         case Sees(a=a, b=b):
             return sees(ar, model, _pt(a, env, ar), _pt(b, env, ar))
         case Clear(a0=a0, a1=a1, b0=b0, b1=b1):
-            same_a = a0.name == a1.name and a0.offset == a1.offset
-            same_b = b0.name == b1.name and b0.offset == b1.offset
+            same_a = a0 is a1 or (a0.name == a1.name != "" and a0.offset == a1.offset)
+            same_b = b0 is b1 or (b0.name == b1.name != "" and b0.offset == b1.offset)
             pts = [_pt(p, env, ar) for p in (a0, a1, b0, b1)]
             return z3.Not(_close(ar, model, *pts, same_a, same_b))
         case Distinct(a=a, b=b):
