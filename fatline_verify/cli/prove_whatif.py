@@ -1,7 +1,7 @@
 """``fatline prove MODEL --with left|left-alone,corner [--q Q]``: the what-if legs' obligations, rows of their own;
 the shipped obligations are not touched.
 
-The legs are a move family (:func:`fatline_verify.repair.reach.move_family`, the family ``fatline reach`` and
+The legs are a move family (:func:`fatline_verify.rules.repaired.whatif.legs_family`, the family ``fatline reach`` and
 ``fatline synth`` search), so its obligations are those of every family (:mod:`fatline_verify.prove.smt.family`,
 decided on the lattice ``--q`` by :func:`fatline_verify.prove.family.prove_family`); an answer is replayed by the
 legs the family admits from each robot's own view (no policy). Without ``corner`` a pair whose classes are
@@ -78,9 +78,8 @@ def cmd_prove_whatif(args: argparse.Namespace) -> int:
     from ..prove.family import prove_family
     from ..prove.smt.solving import solver_version
     from ..prove.tasks import check_encoded
-    from ..repair.reach import PROVED, move_family
-    from ..repair.reach import Kind as Leg
     from ..rules.repaired.family import missing as missing_repairs
+    from ..rules.repaired.whatif import legs_family
 
     kinds = parse_with(args.with_)
     model = model_arg(args.model)
@@ -97,7 +96,7 @@ def cmd_prove_whatif(args: argparse.Namespace) -> int:
     if args.lemma not in (ALL, Lemma.NO_COLLISION, Lemma.CONNECTIVITY):
         raise InvalidInput(f"lemma={args.lemma}: --with decides only no-collision and connectivity (or all)")
     lemmas = (Lemma.NO_COLLISION, Lemma.CONNECTIVITY) if args.lemma == ALL else (Lemma(args.lemma),)
-    family = move_family(model, PROVED | {Leg(k) for k in kinds})
+    family = legs_family(model, kinds)
     specs = obligations(family, kinds, lemmas)
     tag = f"whatif-{'-'.join(sorted(kinds))}-q{q}"
     root = claim_dir(args.out, name="out")

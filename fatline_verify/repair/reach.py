@@ -50,7 +50,6 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import replace
 from enum import StrEnum
-from fractions import Fraction
 from itertools import combinations, product
 
 from ..check.initial import initial_array
@@ -58,16 +57,15 @@ from ..model.config import Model
 from ..model.numbers import Point
 from ..model.options import Goal
 from ..rules.decision import ORIGIN
-from ..rules.family.family import LegClass, MoveFamily
 from ..rules.family.lang import Ground, holds
-from ..rules.repaired import whatif
 from ..rules.repaired.options import RepairProgress
+from ..rules.repaired.whatif import left_alone_reach, legs_family, shapes
 from ..schedulers.activation import scheduler_for
 from ..schedulers.round import closest_dist2, collides, collisions, disconnection, rma_violations, snapshot
 
 State = tuple[Point, ...]
 Leg = tuple[Point, str]
-"""A leg's end relative to the robot, and its class in the family (:func:`move_family`)."""
+"""A leg's end relative to the robot, and its class in the family (:func:`.legs_family`)."""
 Moves = tuple[tuple[int, Point], ...]
 """One round: each mover's index in the state and the end of its leg, relative to it."""
 
@@ -107,91 +105,6 @@ def check_kinds(kinds: Iterable[str]) -> None:
         )
 
 
-def move_family(model: Model, kinds: frozenset[Kind] = PROVED) -> MoveFamily:
-    """The family of ``kinds`` on ``model``'s lattice (:func:`fatline_verify.rules.repaired.whatif.family`): its
-    guards are the legs' one statement, read here by the concrete interpreter; the ``left-alone`` legs as
-    long as :func:`left_alone_reach` allows."""
-    q = model.radius
-    key = (q, model.view2, model.options.timing, model.options.contact, kinds)
-    got = _FAMILIES.get(key)
-    if got is None:
-        what = [k.value for k in kinds if k not in PROVED]
-        units = left_alone_reach(model, kinds) if Kind.LEFT_ALONE in kinds else None
-        got = _FAMILIES[key] = whatif.family(what, q, units)
-    return got
-
-
-_FAMILIES: dict[tuple[object, ...], MoveFamily] = {}
-
-
-def shapes(family: MoveFamily, model: Model) -> tuple[tuple[Point, LegClass], ...]:
-    """Every lattice end of ``model`` of each class's shape (at most ``max_step``), in the order legs are
-    tried: class by class, shortest first; each end with its classes in order."""
-    key = (id(family), model.radius)
-    got = _SHAPES.get(key)
-    if got is None or got[0] is not family:
-        rho = model.radius
-        box = int(Fraction(family.max_step) * rho) + 1
-        ends = [(a, b) for a in range(-box, box + 1) for b in range(-box, box + 1) if (a, b) != ORIGIN]
-        out: list[tuple[Point, LegClass]] = []
-        for cls in family.classes:
-            mine = [
-                e
-                for e in ends
-                if family.within_step(e, model) and holds(cls.shape, Ground(model, (), {"me": ORIGIN, "end": e}))
-            ]
-            out += [(e, cls) for e in sorted(mine, key=lambda e: (abs(e[0]), e[1] if not e[0] else abs(e[1])))]
-        got = _SHAPES[key] = (family, tuple(out))
-    return got[1]
-
-
-_SHAPES: dict[tuple[int, int], tuple[MoveFamily, tuple[tuple[Point, LegClass], ...]]] = {}
-
-
-_REACH: dict[tuple[object, ...], int] = {}
-
-
-def left_alone_reach(model: Model, kinds: frozenset[Kind]) -> int:
-    """The longest ``left-alone`` leg, in lattice units (at most one radius): the greatest ``K`` such that no
-    robot the mover does not see (squared distance beyond ``rad_v``), taking any leg of ``kinds`` in the
-    same round (every end of the family's shapes, whatever it sees: a stronger test), comes within a
-    collision of the mover's path to ``(-k, 0)`` for any ``k <= K``; by the model's own ``closest_dist2``
-    and ``collides`` (exact integers). A robot it does not see may be beyond ``2 + k + |leg|`` radii of the
-    mover only, so the search covers the robots within 5 radii (a leg is at most sqrt(2) < 2 radii).
-
-    With the proved legs and left legs the answer is one radius (unit legs: ``d > rad_v >= 4`` radii
-    minus two legs of at most one radius each is more than two radii); with corner legs (sqrt(2) radii)
-    it is the lattice's own answer: one radius at ``q = 1``, half a radius at ``q = 2`` (the collision
-    ``fatline prove repaired --with left,corner --q 2`` found: ``leg-left.and.top-corner``)."""
-    rho = model.radius
-    key = (rho, model.view2, model.options.timing, model.options.contact, kinds)
-    got = _REACH.get(key)
-    if got is not None:
-        return got
-    widest = whatif.family([k.value for k in kinds if k not in PROVED], rho)  # left-alone one radius long
-    legs = sorted({e for e, _ in shapes(widest, model)})
-    far = 25 * rho * rho  # (2 + 1 + 2)^2 radii^2: beyond it no leg of at most 2 radii meets one of 1 radius
-    box = 5 * rho
-    around = [
-        (x, y)
-        for x in range(-box, box + 1)
-        for y in range(-box, box + 1)
-        if not model.sees(x * x + y * y) and x * x + y * y <= far
-    ]
-    best = 0
-    for k in range(1, rho + 1):
-        mine = (ORIGIN, (-k, 0))
-        if any(
-            collides(closest_dist2(mine, ((x, y), (x + a, y + b)), ORIGIN, (x, y), model), model)
-            for x, y in around
-            for a, b in legs
-        ):
-            break
-        best = k
-    _REACH[key] = best
-    return best
-
-
 def what_if_text(kinds: frozenset[Kind], model: Model) -> str:
     """`` + what-if ...``: the what-if kinds of a family as ``reach`` and ``synth`` print them, with the
     command that decides their safety obligations (not the shipped rows; nothing is claimed here)."""
@@ -221,10 +134,10 @@ def family_model(model: Model, kinds: frozenset[Kind]) -> Model:
 
 def family_legs(snap: tuple[Point, ...], model: Model, kinds: frozenset[Kind] = PROVED) -> tuple[Leg, ...]:
     """Every leg of ``kinds`` that a robot seeing ``snap`` may make: each lattice end of a class's shape whose
-    guard holds there (:func:`move_family`, read by the concrete interpreter), unless the family holds the
+    guard holds there (:func:`.legs_family`, read by the concrete interpreter), unless the family holds the
     robot; in lattice units of ``model`` (one radius is ``model.radius`` units), each end once with the
     first class admitting it."""
-    family = move_family(model, kinds)
+    family = legs_family(model, kinds)
     if family.held(snap, model):
         return ()
     out: list[Leg] = []
@@ -380,9 +293,7 @@ __all__ = [
     "check_kinds",
     "family_legs",
     "left_alone_reach",
-    "move_family",
     "refuse",
-    "shapes",
     "starts",
     "what_if_text",
 ]

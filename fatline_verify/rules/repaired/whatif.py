@@ -30,9 +30,11 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from fractions import Fraction
+from typing import Any
 
+from ...model.numbers import Point
 from ..family.family import LegClass, MoveFamily
-from ..family.lang import FALSE, Cond, Pt, end, exists, forall, me
+from ..family.lang import FALSE, Cond, Ground, Pt, end, exists, forall, holds, me
 from .family import BOTTOM, HORIZONTAL, LEGS, TOP, _below_each, _guard, _not_above, _on_vertical, dx, dy
 
 LEFT, LEFT_ALONE, CORNER = "left", "left-alone", "corner"
@@ -149,4 +151,102 @@ def family(kinds: Iterable[str], q: int, left_units: int | None = None) -> MoveF
     )
 
 
-__all__ = ["BOTTOM_CORNER", "CORNER", "KINDS", "LEFT", "LEFT_ALONE", "SHIPPED", "TOP_CORNER", "classes", "family"]
+def legs_family(model: Any, kinds: Iterable[str] = ()) -> MoveFamily:
+    """:func:`family` of the what-if ``kinds`` among ``kinds`` (others, such as ``fatline reach``'s ``right`` and
+    ``vertical``, are the repaired classes, always there) on ``model``'s lattice, the ``left-alone`` legs as long
+    as :func:`left_alone_reach` allows: the family ``fatline reach``, ``synth`` and ``prove --with`` read, and a
+    table's. Made once per lattice, view and kinds."""
+    what = frozenset(str(k) for k in kinds if str(k) in KINDS)
+    key = (model.radius, model.view2, model.options.timing, model.options.contact, what)
+    got = _FAMILIES.get(key)
+    if got is None:
+        units = left_alone_reach(model, what) if LEFT_ALONE in what else None
+        got = _FAMILIES[key] = family(what, model.radius, units)
+    return got
+
+
+_FAMILIES: dict[tuple[object, ...], MoveFamily] = {}
+
+
+def shapes(family: MoveFamily, model: Any) -> tuple[tuple[Point, LegClass], ...]:
+    """Every lattice end of ``model`` of each class's shape (at most ``max_step``), in the order legs are tried:
+    class by class, shortest first (the concrete interpreter on the shape alone: it speaks of ``end`` only)."""
+    key = (id(family), model.radius)
+    got = _SHAPES.get(key)
+    if got is None or got[0] is not family:
+        rho = model.radius
+        box = int(Fraction(family.max_step) * rho) + 1
+        ends = [(a, b) for a in range(-box, box + 1) for b in range(-box, box + 1) if (a, b) != (0, 0)]
+        out: list[tuple[Point, LegClass]] = []
+        for cls in family.classes:
+            mine = [
+                e
+                for e in ends
+                if family.within_step(e, model) and holds(cls.shape, Ground(model, (), {"me": (0, 0), "end": e}))
+            ]
+            out += [(e, cls) for e in sorted(mine, key=lambda e: (abs(e[0]), e[1] if not e[0] else abs(e[1])))]
+        got = _SHAPES[key] = (family, tuple(out))
+    return got[1]
+
+
+_SHAPES: dict[tuple[int, int], tuple[MoveFamily, tuple[tuple[Point, LegClass], ...]]] = {}
+_REACH: dict[tuple[object, ...], int] = {}
+
+
+def left_alone_reach(model: Any, kinds: Iterable[str]) -> int:
+    """The longest ``left-alone`` leg, in lattice units (at most one radius): the greatest ``K`` such that no
+    robot the mover does not see (squared distance beyond ``rad_v``), taking any leg of the family of ``kinds``
+    in the same round (every end of its shapes, whatever it sees: a stronger test), comes within a collision
+    of the mover's path to ``(-k, 0)`` for any ``k <= K``; by the model's own ``closest_dist2`` and ``collides``
+    (exact integers). A robot it does not see may be beyond ``2 + k + |leg|`` radii of the mover only, so the
+    search covers the robots within 5 radii (a leg is at most sqrt(2) < 2 radii).
+
+    With the proved legs and left legs the answer is one radius (unit legs: ``d > rad_v >= 4`` radii minus two
+    legs of at most one radius each is more than two radii); with corner legs (sqrt(2) radii) it is the
+    lattice's own answer: one radius at ``q = 1``, half a radius at ``q = 2`` (the collision ``fatline prove
+    repaired --with left,corner --q 2`` found: ``leg-left.and.top-corner``)."""
+    from ...schedulers.round import closest_dist2, collides
+
+    rho = model.radius
+    what = frozenset(str(k) for k in kinds if str(k) in KINDS)
+    key = (rho, model.view2, model.options.timing, model.options.contact, what)
+    got = _REACH.get(key)
+    if got is not None:
+        return got
+    legs = sorted({e for e, _ in shapes(family(what, rho), model)})  # left-alone one radius long
+    far = 25 * rho * rho  # (2 + 1 + 2)^2 radii^2: beyond it no leg of at most 2 radii meets one of 1 radius
+    box = 5 * rho
+    around = [
+        (x, y)
+        for x in range(-box, box + 1)
+        for y in range(-box, box + 1)
+        if not model.sees(x * x + y * y) and x * x + y * y <= far
+    ]
+    best = 0
+    for k in range(1, rho + 1):
+        mine = ((0, 0), (-k, 0))
+        if any(
+            collides(closest_dist2(mine, ((x, y), (x + a, y + b)), (0, 0), (x, y), model), model)
+            for x, y in around
+            for a, b in legs
+        ):
+            break
+        best = k
+    _REACH[key] = best
+    return best
+
+
+__all__ = [
+    "BOTTOM_CORNER",
+    "CORNER",
+    "KINDS",
+    "LEFT",
+    "LEFT_ALONE",
+    "SHIPPED",
+    "TOP_CORNER",
+    "classes",
+    "family",
+    "left_alone_reach",
+    "legs_family",
+    "shapes",
+]
