@@ -141,13 +141,15 @@ def assumed(
     bound: tuple[str, ...] = (),
     unkept: tuple[str, ...] = (),
     exact: bool = False,
+    forced: list[z3.BoolRef] | None = None,
 ) -> z3.BoolRef:
     """A z3 term for condition ``c`` of the robot ``mover`` (its ``me`` and ``end`` in ``env``) over the
     named robots of ``scene``: implied by ``c`` (``positive``) or implying it (under a negation); see the
     module docstring. ``bound``: the named robots the enclosing ``forall`` s are instantiated at.
     ``exact``: the named robots are every robot the mover sees (a ground view): each quantifier becomes the
     conjunction or disjunction of its instances, and the term is equivalent to ``c``, whatever the polarity
-    (what the tests compare with the concrete interpreter)."""
+    (what the tests compare with the concrete interpreter). ``forced``: where a named witness is substituted,
+    its term is also appended there (a bridged obligation asserts it: the test passed through that witness)."""
     ar, model = scene.ar, scene.model
 
     def rec(sub: Cond, pos: bool = positive, env2: dict[str, Pt] = env, b2: tuple[str, ...] = bound) -> z3.BoolRef:
@@ -161,6 +163,7 @@ def assumed(
             bound=b2,
             unkept=unkept if b2 == bound else (),
             exact=exact,
+            forced=forced,
         )
 
     others = [u for u in scene.at if u != mover]
@@ -211,7 +214,10 @@ def assumed(
                 w = witnessed[key]
                 if w is None:
                     return ar.false()
-                return z3.And(sees(ar, model, me, scene.at[w]), rec(body, positive, {**env, v: scene.at[w]}, bound))
+                term = z3.And(sees(ar, model, me, scene.at[w]), rec(body, positive, {**env, v: scene.at[w]}, bound))
+                if forced is not None and positive:
+                    forced.append(term)
+                return term
             if not positive or exact:
                 return ar.any(
                     [
@@ -322,10 +328,15 @@ def _move(
     scene.ends[name] = end
     leg = family.get(cls)
     env = {"me": at, "end": end}
+    # A bridged edge (unkept) whose test has several witness roles: the test passed, not without a witness, so
+    # through the witness of some role; this obligation is the case of the role it names, whose term is asserted
+    # apart (inside the guard an unnamed role's existential is true and would leave the named one free).
+    forced: list[z3.BoolRef] | None = [] if unkept and len(edge_roles(leg.guard)) > 1 else None
+    guard = assumed(leg.guard, scene, name, env, witnessed=witnessed, unkept=unkept, exact=exact, forced=forced)
     return [
         assumed(leg.shape, scene, name, env),
         z3.Not(assumed(family.at_rest, scene, name, env, positive=False, exact=exact)),
-        assumed(leg.guard, scene, name, env, witnessed=witnessed, unkept=unkept, exact=exact),
+        ar.all([guard, *(forced or [])]),
     ]
 
 
