@@ -188,10 +188,12 @@ def _golden_case(with_: str, q: int, tmp_path: Path, capsys) -> None:  # type: i
     tag = "-".join(sorted(with_.split(",")))
     rows = json.loads((tmp_path / "repaired" / f"whatif-{tag}-q{q}.json").read_text())["obligations"]
     got = {r["key"]: r["verdict"] for r in rows}
-    assert {k: got.get(k) for k in want} == want
+    decided = {k: v for k, v in want.items() if v != "INCONCLUSIVE"}  # out of budget then, on a loaded machine
+    assert {k: got.get(k) for k in decided} == decided
+    assert set(want) <= set(got)
     extra = {k: v for k, v in got.items() if k not in want}  # a bridge moving: it sees r left of it, held
     assert set(extra.values()) <= {"PROVED"}, extra
-    assert code == (1 if "VIOLATED" in want.values() else 0)
+    assert code == (1 if "VIOLATED" in want.values() else 3 if "INCONCLUSIVE" in got.values() else 0)
 
 
 @pytest.mark.parametrize("with_", ["left", "left-alone"])
