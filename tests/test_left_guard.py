@@ -12,12 +12,15 @@ import pytest
 from hypothesis import given, settings
 
 from fatline_verify.cli import main
+from fatline_verify.cli.prove_whatif import obligations
 from fatline_verify.lemmas.properties import Lemma, Verdict
 from fatline_verify.model.options import Scheduler
-from fatline_verify.prove.smt import whatif as w
-from fatline_verify.prove.whatif import obligations, prove_whatif
+from fatline_verify.prove.family import prove_family
+from fatline_verify.prove.smt.cases import Arith
+from fatline_verify.prove.smt.family import build
 from fatline_verify.repair.reach import PROVED, Family, Kind, canonical, family_legs, left_alone_reach
 from fatline_verify.repair.search import confirm_stuck, reach, way_to_line
+from fatline_verify.rules.repaired.whatif import family, legs_family
 from fatline_verify.schedulers.round import closest_dist2, collides, snapshot
 from fatline_verify.synth.certificate import certify
 from fatline_verify.synth.encode import synthesise
@@ -34,8 +37,14 @@ STUCK = ((0, 1), (0, 4), (0, 7), (2, 0))
 robots of one vertical, one right of them; the unguarded family does."""
 
 
-def _spec(key: str, kinds: frozenset[str], q: int) -> w.WhatIfSpec:
-    return {s.key: s for s in obligations(repaired(q), kinds, LEMMAS)}[key]
+def _spec(key: str, kinds: frozenset[str], q: int):  # type: ignore[no-untyped-def]
+    fam = legs_family(repaired(q), kinds)
+    return fam, {s.key: s for s in obligations(fam, kinds, LEMMAS)}[key]
+
+
+def _prove(key: str, kinds: frozenset[str], q: int, timeout: float = 30, out=None):  # type: ignore[no-untyped-def]
+    fam, spec = _spec(key, kinds, q)
+    return prove_family(repaired(q), spec, timeout=timeout, out=out, family=fam)
 
 
 def test_the_longest_left_alone_leg_is_the_lattice_s_own_answer():
@@ -94,46 +103,46 @@ def test_the_guard_stops_the_unguarded_counterexample():
 @pytest.mark.parametrize(
     ("key", "kinds", "q"),
     [
-        ("connectivity/bridged-horizontal.and.left-alone@q1", frozenset({"left-alone"}), 1),
-        ("connectivity/bridged-top.and.left-alone@q1", frozenset({"left-alone"}), 1),
-        ("connectivity/kept-horizontal.and.left-alone@q2", frozenset({"left-alone"}), 2),
-        ("connectivity/bridged-left-alone.and.left-alone@q2", frozenset({"left-alone"}), 2),
-        ("connectivity/bridged-vertical-left-alone.and.rest.via.left-alone@q1", frozenset({"left-alone", "corner"}), 1),
+        ("connectivity/bridged-horizontal.and.left-alone.by.bridge-rest", frozenset({"left-alone"}), 1),
+        ("connectivity/bridged-top.and.left-alone.by.bridge-rest", frozenset({"left-alone"}), 1),
+        ("connectivity/kept-horizontal.and.left-alone", frozenset({"left-alone"}), 2),
+        ("connectivity/bridged-left-alone.and.left-alone.by.bridge-rest", frozenset({"left-alone"}), 2),
+        ("connectivity/bridged-left-alone.and.rest.by.vertical-left-alone", frozenset({"left-alone", "corner"}), 1),
     ],
 )
 def test_formerly_violated_pairs_are_proved_under_the_guard(key, kinds, q):
     """Each pair VIOLATED with the unguarded left leg (docs/repaired.md): two robots of one vertical moving
     at once, one stepping left. Under the guard they never occur together."""
-    got = prove_whatif(repaired(q), _spec(key, kinds, q), timeout=30, out=None)
+    got = _prove(key, kinds, q)
     assert got.verdict is Verdict.PROVED and "never occur together" in got.reason, (key, got.reason)
     if q == 1:  # the unguarded twin (q = 2: tests/test_whatif_legs.py, bridged-left.and.left)
         plain = frozenset(k.replace("left-alone", "left") for k in kinds)
-        unguarded = _spec(key.replace("left-alone", "left"), plain, q)
-        assert prove_whatif(repaired(q), unguarded, timeout=30, out=None).verdict is Verdict.VIOLATED
+        assert _prove(key.replace("left-alone", "left"), plain, q, timeout=60).verdict is Verdict.VIOLATED
 
 
 def test_a_left_alone_leg_against_a_robot_at_rest_is_proved_for_every_size(tmp_path):
     """Not vacuous: the solver's unsat, with the header's any-size argument naming the guard."""
-    spec = _spec("no-collision/leg-left-alone.and.rest@q1", frozenset({"left-alone"}), 1)
-    got = prove_whatif(repaired(1), spec, timeout=30, out=tmp_path)
+    got = _prove("no-collision/leg-left-alone.and.rest", frozenset({"left-alone"}), 1, out=tmp_path)
     assert got.verdict is Verdict.PROVED and "every size" in got.reason, got.reason
-    text = (tmp_path / "no-collision" / "leg-left-alone.and.rest.q1.smt2").read_text()
-    assert "seeing no other robot on its own vertical" in text and "Why unsat covers swarms of every size" in text
+    text = (tmp_path / "no-collision" / "leg-left-alone.and.rest.smt2").read_text()
+    assert "every robot seen strictly right of it" in text and "Why unsat covers swarms of every size" in text
 
 
 @pytest.mark.slow
 def test_the_half_radius_bound_is_what_proves_left_alone_against_a_corner_at_q2():
     """``leg-left-alone.and.top-corner@q2``: PROVED with the bound (half a radius); with a one-radius leg the
-    same obligation has a violation (sat), which the family's replay refuses (its leg is not one the
-    guarded family allows), so the bound is needed and the family agrees with it."""
+    same obligation, each leg's witness named, has a violation (sat): the bound is needed and the family
+    agrees with it."""
     from fatline_verify.prove.smt.solving import check, solver_for
 
-    spec = _spec("no-collision/leg-left-alone.and.top-corner@q2", frozenset({"left-alone", "corner"}), 2)
-    assert spec.left_units == 1
-    got = prove_whatif(repaired(2), spec, timeout=120, out=None)
+    key = "no-collision/leg-left-alone.and.top-corner"
+    kinds = frozenset({"left-alone", "corner"})
+    fam, spec = _spec(key, kinds, 2)
+    assert "dx <= 1/2" in fam.get("left-alone").says
+    got = _prove(key, kinds, 2, timeout=120)
     assert got.verdict is Verdict.PROVED, got.reason
-    longer = w.WhatIfSpec(spec.lemma, spec.form, spec.mine, spec.other, spec.kinds, 2, reach=2)
-    built = w.build(w.arith(longer), repaired(2), longer, witnesses=True)
+    longer = family(kinds, 2, left_units=2)
+    built = build(Arith(2), repaired(2), longer, spec, witnesses=True)
     assert check(solver_for(built, 120), built, 120).status == "sat"
 
 
@@ -142,9 +151,10 @@ def test_fatline_prove_with_left_alone_writes_its_rows(tmp_path, capsys):
     out = capsys.readouterr().out
     assert code == 0, out
     doc = json.loads((tmp_path / "repaired" / "whatif-left-alone-q1.json").read_text())
-    assert doc["what_if"] == ["left-alone"] and len(doc["obligations"]) == 18
-    assert all(r["verdict"] == "PROVED" for r in doc["obligations"]), [r["key"] for r in doc["obligations"]]
-    assert "18 PROVED" in out
+    rows = doc["obligations"]
+    assert doc["what_if"] == ["left-alone"] and len(rows) == 62
+    assert all(r["verdict"] == "PROVED" for r in rows), [r["key"] for r in rows if r["verdict"] != "PROVED"]
+    assert "62 PROVED" in out
 
 
 @pytest.mark.parametrize("command", [["prove", "repaired", "--out", "OUT"], ["reach"], ["synth"]])

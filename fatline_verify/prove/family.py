@@ -27,15 +27,18 @@ from typing import Any
 
 from ..lemmas.properties import Lemma, Verdict
 from ..model.config import Model
+from ..model.geometry import dist2
 from ..model.numbers import Point, show_point
-from ..model.swarm import initial_problems
+from ..model.swarm import initial_problems, is_connected
 from ..rules import registry
+from ..rules.decision import Decision
 from ..rules.family.family import REST, MoveFamily
-from ..schedulers.round import Collision, decide_all, lost_edges, play_round, snapshot
+from ..rules.family.lang import Ground, holds
+from ..schedulers.round import Collision, collides, decide_all, disconnection, lost_edges, play_round, snapshot
 from ..trace.simulate import Outcome, Run, outcome_after
 from ..trace.traces import replayed_document
 from .search import MIN_CHECK, PROVED_REASON, Budget, rounds, rounds_text
-from .smt.family import BRIDGED, FamilySpec, argument, build
+from .smt.family import BRIDGED, FamilySpec, argument, build, leg_roles
 from .tasks import VIEWS_FORM, ProofResult, ViewsSpec
 from .views import all_views, count_views, random_views
 
@@ -57,17 +60,30 @@ def family_for(model: Model) -> MoveFamily:
     return family
 
 
-def prove_family(model: Model, spec: FamilySpec, *, timeout: float, out: Path | None) -> ProofResult:
-    """Decide one obligation of the model's family; write its real-number form (with its argument) under ``out``."""
+def prove_family(
+    model: Model, spec: FamilySpec, *, timeout: float, out: Path | None, family: MoveFamily | None = None
+) -> ProofResult:
+    """Decide one obligation of the model's family; write its form (with its argument) under ``out``.
+    ``family``: a family without a policy (``fatline prove --with``): an answer is replayed by legs the family
+    admits (:func:`replay_legs`), not by a rule set's ``decide``. A family with ``lattice`` is decided on the
+    model's lattice (integers), every other over the reals."""
     from .smt.cases import Arith
     from .smt.solving import write
 
-    family = family_for(model)
-    full = build(Arith(None), model, family, spec)
+    policy = family is None
+    family = family_for(model) if family is None else family
+    q = model.parameters.q if family.lattice else None
+
+    def arith() -> Arith:
+        return Arith(q)
+
+    proved = PROVED_REASON if q is None else PROVED_ON.format(q=q)
+    replay = replay_family if policy else replay_legs
+    full = build(arith(), model, family, spec)
     full.comment = argument(model, family, spec, full)
     path = ""
     if out is not None:
-        target = out / spec.lemma / f"{spec.key.split('/', 1)[1]}.smt2"
+        target = out / str(spec.lemma) / f"{spec.key.split('/', 1)[1]}.smt2"
         write(full, target)
         path = target.as_posix()
     spend = Budget(timeout)
@@ -84,7 +100,7 @@ def prove_family(model: Model, spec: FamilySpec, *, timeout: float, out: Path | 
 
     for budget in rounds(timeout):
         if not fires:
-            ans = spend.solve(build(Arith(None), model, family, spec, vacuity=True), budget * VACUITY_SHARE)
+            ans = spend.solve(build(arith(), model, family, spec, vacuity=True), budget * VACUITY_SHARE)
             if ans.status == "unsat":
                 return result(Verdict.PROVED, "these legs never occur together (vacuous)")
             fires = ans.status == "sat"
@@ -92,16 +108,35 @@ def prove_family(model: Model, spec: FamilySpec, *, timeout: float, out: Path | 
             break
         ans = spend.solve(full, budget * (1 - (0 if fires else VACUITY_SHARE)))
         if ans.status == "unsat":
-            return result(Verdict.PROVED, PROVED_REASON)
+            return result(Verdict.PROVED, proved)
         if ans.status == "sat":
-            verdict, reason, doc, config = replay_family(model, family, spec, ans.positions)
+            verdict, reason, doc, config = replay(model, family, spec, ans.positions)
             if verdict is not Verdict.VIOLATED:  # ask for one from an initial configuration (delta apart, connected)
-                initial = build(Arith(None), model, family, spec, initial=True)
+                initial = build(arith(), model, family, spec, initial=True)
                 again = spend.solve(initial, min(budget, spend.left()) / 2)
                 if again.status == "sat":
-                    better = replay_family(model, family, spec, again.positions)
+                    better = replay(model, family, spec, again.positions)
                     if better[0] is Verdict.VIOLATED:
                         verdict, reason, doc, config = better
+            if verdict is not Verdict.VIOLATED and _needs_witnesses(family, spec):
+                named = spend.solve(build(arith(), model, family, spec, witnesses=True), spend.left() * WITNESS_SHARE)
+                if named.status == "unsat":
+                    return result(Verdict.PROVED, proved + WITNESSED)
+            if verdict is not Verdict.VIOLATED and not policy:
+                tried = []
+                for extra in range(EXTRA + 1):
+                    closed = spend.solve(
+                        build(arith(), model, family, spec, closed=extra), spend.left() / (EXTRA + 1 - extra)
+                    )
+                    if closed.status == "sat":
+                        again = replay(model, family, spec, closed.positions)
+                        if again[0] is Verdict.VIOLATED:
+                            return result(*again)
+                    tried.append(f"{extra} more: {closed.status}{', not replayed' if closed.status == 'sat' else ''}")
+                reason += (
+                    f"; searched again with the named robots and 0 to {EXTRA} more at rest as the whole swarm "
+                    f"({'; '.join(tried)}): no counterexample"
+                )
             return result(verdict, reason, doc, config)
         last = ans.reason
     return result(Verdict.INCONCLUSIVE, f"solver: {last} {rounds_text(timeout)}; rerun with a larger --timeout")
@@ -161,6 +196,87 @@ def replay_family(
     if problems:
         return (Verdict.INCONCLUSIVE, f"{what} in {shown}, not an initial configuration ({problems[0]})", doc, config)
     return (Verdict.VIOLATED, f"{what}, from an initial configuration of {len(state)} robots (replayed)", doc, config)
+
+
+WITNESSED = ", once the robot each mover's leg needs it to see (its guard's witness outside every forall) is named"
+EXTRA = 2
+"""Robots at rest added to the named ones when a family without a policy looks for a counterexample its legs
+replay (the named robots and they the whole swarm)."""
+WITNESS_SHARE = 0.6
+"""The share of what is left of the budget, once an answer is not replayed, for the obligation with each
+mover's leg witnesses named."""
+PROVED_ON = "unsat on the lattice q = {q}: holds for swarms of every size on it (the header's argument)"
+
+
+def _needs_witnesses(family: MoveFamily, spec: FamilySpec) -> bool:
+    """Whether a mover of ``spec`` has a leg witness to name (:func:`~.smt.family.leg_roles`)."""
+    movers = [c for c in (spec.mine, spec.other, spec.witness) if c and c != REST]
+    return any(leg_roles(family.get(c).guard) for c in movers)
+
+
+def replay_legs(
+    model: Model, family: MoveFamily, spec: FamilySpec, positions: dict[str, tuple[Fraction, Fraction]]
+) -> tuple[Verdict, str, dict[str, Any] | None, tuple[str, ...]]:
+    """The named robots of a solution as a swarm of a family without a policy (every robot may take any leg
+    the family admits from its own view): VIOLATED only if the swarm is connected and collision-free, each
+    mover's leg is of its class and admitted from its own view there (not held, its shape and guard by the
+    concrete interpreter), and the round the executable model plays breaks the obligation's claim."""
+    names = ["r", "o", *(["b"] if spec.form == BRIDGED else [])]
+    names += sorted(n for n in positions if n[0] in "we" and n[1] in ".0123456789" and not n.endswith("'"))
+    classes = {"r": spec.mine, "o": spec.other, "b": spec.witness}
+    state = tuple(_on_lattice(model, positions[n]) for n in names)
+    moves = {
+        i: (
+            _on_lattice(model, positions[f"{n}'"])[0] - state[i][0],
+            _on_lattice(model, positions[f"{n}'"])[1] - state[i][1],
+        )
+        for i, n in enumerate(names)
+        if classes.get(n, REST) != REST
+    }
+    config = tuple(f"{x},{y}" for x, y in (positions[n] for n in names))
+    shown = f"robots {list(state)} (lattice units, q = {model.parameters.q}; {', '.join(names)}), round " + str(
+        sorted(moves.items())
+    )
+    if not is_connected(state, model) or any(
+        collides(dist2(a, b), model) for i, a in enumerate(state) for b in state[i + 1 :]
+    ):
+        return (Verdict.INCONCLUSIVE, f"the family's conditions admit a violation at {shown}, but those robots are "
+                "not a connected swarm of disjoint discs: not a counterexample", None, config)  # fmt: skip
+    for i, end in moves.items():
+        cls = family.get(classes[names[i]])
+        view = snapshot(state, i, model)
+        g = Ground(model, view, {"me": (0, 0), "end": end})
+        if (
+            family.held(view, model)
+            or not family.within_step(end, model)
+            or not (holds(cls.shape, g) and holds(cls.guard, g))
+        ):
+            return (Verdict.INCONCLUSIVE, f"the family's conditions admit a violation at {shown}, but the family does "
+                    f"not admit robot {names[i]}'s {cls.name} leg from its own view there: not a counterexample; the "
+                    "family's argument needs a stronger condition", None, config)  # fmt: skip
+    decisions = {i: Decision("family-leg", end, ((0, 0), end), ()) for i, end in moves.items()}  # type: ignore[arg-type]
+    played = play_round(state, sorted(moves), model, decisions)
+    before, after = played.before, played.after
+    if spec.lemma is Lemma.NO_COLLISION:
+        broken = any(isinstance(v, Collision) and v.robots == (0, 1) for v in played.violations)
+        what = "r and o collide"
+    else:
+        gone = {pair for pair, _ in lost_edges(before, after, model)}
+        broken = (0, 1) in gone and (spec.form != BRIDGED or bool(gone & {(0, 2), (1, 2)}))
+        what = "r-o lost" + (" and not bridged through b" if spec.form == BRIDGED else "")
+        what += (
+            "; the swarm splits" if disconnection(before, after, model) is not None else "; the swarm stays connected"
+        )
+    if not broken:
+        return (Verdict.INCONCLUSIVE, f"the replayed round of {shown} keeps the claim", None, config)
+    initial = "an initial configuration" if not initial_problems(state, model) else "a connected swarm (not initial)"
+    return (Verdict.VIOLATED, f"{what}: {shown}, from {initial}, each leg admitted by the family from its own view "
+            "(replayed by the executable model)", None, config)  # fmt: skip
+
+
+def _on_lattice(model: Model, p: tuple[Fraction, Fraction]) -> Point:
+    x, y = model.to_lattice(p)
+    return (int(x), int(y))
 
 
 @dataclass(frozen=True)
@@ -229,4 +345,4 @@ def prove_views(model: Model, spec: ViewsSpec, *, sample: int | None = None) -> 
     )
 
 
-__all__ = ["VIEWS_FORM", "ViewsSpec", "check_views", "prove_family", "prove_views", "replay_family"]
+__all__ = ["VIEWS_FORM", "ViewsSpec", "check_views", "prove_family", "prove_views", "replay_family", "replay_legs"]

@@ -57,14 +57,15 @@ from ..model.config import Model
 from ..model.numbers import Point
 from ..model.options import Goal
 from ..rules.decision import ORIGIN
-from ..rules.repaired.algorithm import allowed, locked
+from ..rules.family.lang import Ground, holds
 from ..rules.repaired.options import RepairProgress
+from ..rules.repaired.whatif import left_alone_reach, legs_family, shapes
 from ..schedulers.activation import scheduler_for
 from ..schedulers.round import closest_dist2, collides, collisions, disconnection, rma_violations, snapshot
 
 State = tuple[Point, ...]
-Leg = tuple[Point, bool]
-"""A leg's end relative to the robot, and whether it is the bottom's contraction (``bottom_up``)."""
+Leg = tuple[Point, str]
+"""A leg's end relative to the robot, and its class in the family (:func:`.legs_family`)."""
 Moves = tuple[tuple[int, Point], ...]
 """One round: each mover's index in the state and the end of its leg, relative to it."""
 
@@ -104,63 +105,6 @@ def check_kinds(kinds: Iterable[str]) -> None:
         )
 
 
-def _shapes(rho: int, kinds: frozenset[Kind]) -> list[Point]:
-    """Every leg end (relative, lattice units) any robot of a family with ``kinds`` may take, whatever it sees."""
-    out: list[Point] = []
-    if Kind.RIGHT in kinds:
-        out += [(k, 0) for k in range(1, rho + 1)]
-    if Kind.VERTICAL in kinds:
-        out += [(0, k) for k in range(-rho, rho + 1) if k]
-    if kinds & EXCLUSIVE:
-        out += [(-k, 0) for k in range(1, rho + 1)]
-    if Kind.CORNER in kinds:
-        out += [(k, j) for k in range(1, rho + 1) for j in range(-rho, rho + 1) if j]
-    return out
-
-
-_REACH: dict[tuple[object, ...], int] = {}
-
-
-def left_alone_reach(model: Model, kinds: frozenset[Kind]) -> int:
-    """The longest ``left-alone`` leg, in lattice units (at most one radius): the greatest ``K`` such that no
-    robot the mover does not see (squared distance beyond ``rad_v``), taking any leg of ``kinds`` in the
-    same round (:func:`_shapes`, whatever it sees: a stronger test), comes within a collision of the
-    mover's path to ``(-k, 0)`` for any ``k <= K``; by the model's own ``closest_dist2`` and ``collides``
-    (exact integers). A robot it does not see may be beyond ``2 + k + |leg|`` radii of the mover only,
-    so the search covers the robots within 5 radii (a leg is at most sqrt(2) < 2 radii).
-
-    With the proved legs and left legs the answer is one radius (unit legs: ``d > rad_v >= 4`` radii
-    minus two legs of at most one radius each is more than two radii); with corner legs (sqrt(2) radii)
-    it is the lattice's own answer: one radius at ``q = 1``, half a radius at ``q = 2`` (the collision
-    ``fatline prove repaired --with left,corner --q 2`` found: ``leg-left.and.top-corner``)."""
-    rho = model.radius
-    key = (rho, model.view2, model.options.timing, model.options.contact, kinds)
-    got = _REACH.get(key)
-    if got is not None:
-        return got
-    legs = _shapes(rho, kinds)
-    far = 25 * rho * rho  # (2 + 1 + 2)^2 radii^2: beyond it no leg of at most 2 radii meets one of 1 radius
-    box = 5 * rho
-    around = [
-        (x, y)
-        for x in range(-box, box + 1)
-        for y in range(-box, box + 1)
-        if not model.sees(x * x + y * y) and x * x + y * y <= far
-    ]
-    best = 0
-    for k in range(1, rho + 1):
-        mine = (ORIGIN, (-k, 0))
-        if any(
-            collides(closest_dist2(mine, ((x, y), (x + a, y + b)), ORIGIN, (x, y), model), model)
-            for x, y in around
-            for a, b in legs
-        ):
-            break
-        best = k
-    _REACH[key] = best
-    return best
-
-
 def what_if_text(kinds: frozenset[Kind], model: Model) -> str:
     """`` + what-if ...``: the what-if kinds of a family as ``reach`` and ``synth`` print them, with the
     command that decides their safety obligations (not the shipped rows; nothing is claimed here)."""
@@ -189,34 +133,20 @@ def family_model(model: Model, kinds: frozenset[Kind]) -> Model:
 
 
 def family_legs(snap: tuple[Point, ...], model: Model, kinds: frozenset[Kind] = PROVED) -> tuple[Leg, ...]:
-    """Every leg of ``kinds`` that a robot seeing ``snap`` may make (module docstring), in lattice units
-    of ``model`` (one radius is ``model.radius`` units)."""
-    if not snap or locked(snap):
+    """Every leg of ``kinds`` that a robot seeing ``snap`` may make: each lattice end of a class's shape whose
+    guard holds there (:func:`.legs_family`, read by the concrete interpreter), unless the family holds the
+    robot; in lattice units of ``model`` (one radius is ``model.radius`` units), each end once with the
+    first class admitting it."""
+    family = legs_family(model, kinds)
+    if family.held(snap, model):
         return ()
-    rho = model.radius
-    right = int(max(c[0] for c in snap))  # lattice states: whole units
-    above = [c[1] for c in snap if c[0] == 0 and c[1] > 0]
-    below = [c[1] for c in snap if c[0] == 0 and c[1] < 0]
-    room = int(min(above)) - 3 * rho if above else 0
-    tries: list[Leg] = []
-    if Kind.RIGHT in kinds:
-        tries += [((k, 0), False) for k in range(1, min(rho, right) + 1)]
-    if Kind.VERTICAL in kinds:
-        if not above:
-            tries += [((0, k), False) for k in range(-rho, rho + 1) if k]
-        elif not below:
-            tries += [((0, k), True) for k in range(1, min(rho, room) + 1)]
-    if Kind.LEFT in kinds and right > 0:  # a robot that may be on the RMA may not leave it (Lemma 3)
-        tries += [((-k, 0), False) for k in range(1, rho + 1)]
-    if Kind.LEFT_ALONE in kinds and right > 0 and not any(c[0] == 0 for c in snap):  # alone on its vertical
-        tries += [((-k, 0), False) for k in range(1, left_alone_reach(model, kinds) + 1)]
-    if Kind.CORNER in kinds:
-        for k in range(1, min(rho, right) + 1):
-            if below and not above:
-                tries += [((k, -j), False) for j in range(1, rho + 1)]
-            elif above and not below:
-                tries += [((k, j), True) for j in range(1, min(rho, room) + 1)]
-    return tuple((end, up) for end, up in tries if allowed(end, (ORIGIN, end), snap, model, bottom_up=up))
+    out: list[Leg] = []
+    taken: set[Point] = set()
+    for end, cls in shapes(family, model):
+        if end not in taken and holds(cls.guard, Ground(model, snap, {"me": ORIGIN, "end": end})):
+            taken.add(end)
+            out.append((end, cls.name))
+    return tuple(out)
 
 
 def canonical(state: Iterable[Point]) -> State:

@@ -49,6 +49,7 @@ from ...model.config import Model
 from ...model.options import Timing
 from ...rules.family.family import REST, MoveFamily
 from ...rules.family.lang import (
+    XY,
     And,
     Clear,
     Cmp,
@@ -62,9 +63,10 @@ from ...rules.family.lang import (
     Or,
     Sees,
     roles,
+    walk,
 )
 from ...rules.family.lang import Pt as LPt
-from .cases import Arith, Pt, apart, d2, sees
+from .cases import Arith, Pt, apart, d2, sees, view_reach
 from .claims import Built, capsules_close, segment_close
 
 LEG, KEPT, BRIDGED = "leg", "kept", "bridged"
@@ -95,6 +97,8 @@ class Scene:
 
 
 def _pt(p: LPt, env: Mapping[str, Pt], ar: Arith) -> Pt:
+    if isinstance(p, XY):
+        return (_num(p.x, env, ar), _num(p.y, env, ar))
     x, y = env[p.name]
     if p.offset[0] or p.offset[1]:
         return (x + ar.num(p.offset[0]), y + ar.num(p.offset[1]))
@@ -137,13 +141,15 @@ def assumed(
     bound: tuple[str, ...] = (),
     unkept: tuple[str, ...] = (),
     exact: bool = False,
+    forced: list[z3.BoolRef] | None = None,
 ) -> z3.BoolRef:
     """A z3 term for condition ``c`` of the robot ``mover`` (its ``me`` and ``end`` in ``env``) over the
     named robots of ``scene``: implied by ``c`` (``positive``) or implying it (under a negation); see the
     module docstring. ``bound``: the named robots the enclosing ``forall`` s are instantiated at.
     ``exact``: the named robots are every robot the mover sees (a ground view): each quantifier becomes the
     conjunction or disjunction of its instances, and the term is equivalent to ``c``, whatever the polarity
-    (what the tests compare with the concrete interpreter)."""
+    (what the tests compare with the concrete interpreter). ``forced``: where a named witness is substituted,
+    its term is also appended there (a bridged obligation asserts it: the test passed through that witness)."""
     ar, model = scene.ar, scene.model
 
     def rec(sub: Cond, pos: bool = positive, env2: dict[str, Pt] = env, b2: tuple[str, ...] = bound) -> z3.BoolRef:
@@ -157,6 +163,7 @@ def assumed(
             bound=b2,
             unkept=unkept if b2 == bound else (),
             exact=exact,
+            forced=forced,
         )
 
     others = [u for u in scene.at if u != mover]
@@ -173,8 +180,8 @@ def assumed(
         case Sees(a=a, b=b):
             return sees(ar, model, _pt(a, env, ar), _pt(b, env, ar))
         case Clear(a0=a0, a1=a1, b0=b0, b1=b1):
-            same_a = a0.name == a1.name and a0.offset == a1.offset
-            same_b = b0.name == b1.name and b0.offset == b1.offset
+            same_a = a0 is a1 or (a0.name == a1.name != "" and a0.offset == a1.offset)
+            same_b = b0 is b1 or (b0.name == b1.name != "" and b0.offset == b1.offset)
             pts = [_pt(p, env, ar) for p in (a0, a1, b0, b1)]
             return z3.Not(_close(ar, model, *pts, same_a, same_b))
         case Distinct(a=a, b=b):
@@ -207,7 +214,10 @@ def assumed(
                 w = witnessed[key]
                 if w is None:
                     return ar.false()
-                return z3.And(sees(ar, model, me, scene.at[w]), rec(body, positive, {**env, v: scene.at[w]}, bound))
+                term = z3.And(sees(ar, model, me, scene.at[w]), rec(body, positive, {**env, v: scene.at[w]}, bound))
+                if forced is not None and positive:
+                    forced.append(term)
+                return term
             if not positive or exact:
                 return ar.any(
                     [
@@ -264,7 +274,7 @@ def specs(family: MoveFamily, lemmas: tuple[Lemma, ...]) -> list[FamilySpec]:
                 if form != BRIDGED:
                     out += [FamilySpec(lemma, form, mine, other) for other in (REST, *names[i:])]
                     continue
-                for role in roles(family.get(mine).guard):
+                for role in edge_roles(family.get(mine).guard):
                     out += [
                         FamilySpec(lemma, form, mine, other, role, witness)
                         for other in (REST, *names)
@@ -273,21 +283,74 @@ def specs(family: MoveFamily, lemmas: tuple[Lemma, ...]) -> list[FamilySpec]:
     return out
 
 
+def edge_roles(c: Cond) -> tuple[str, ...]:
+    """The witness roles of ``c`` that vouch for the robot a ``forall`` binds (an edge's bridge): those whose
+    ``exists`` lies inside a ``forall``. A role outside every ``forall`` is what the leg itself needs its mover
+    to see (named by ``build(..., witnesses=True)``), never an edge's bridge."""
+    out: list[str] = []
+    for sub in walk(c):
+        if isinstance(sub, Forall):
+            out += [r for r in roles(sub.body) if r not in out]
+    return tuple(out)
+
+
+def leg_roles(c: Cond) -> tuple[str, ...]:
+    """The witness roles of ``c`` outside every ``forall``: robots the leg needs its mover to see."""
+
+    def top(sub: Cond) -> list[str]:
+        match sub:
+            case Exists(role=role):
+                return [role]
+            case And(parts=ps) | Or(parts=ps):
+                return [r for p in ps for r in top(p)]
+            case Not(part=p):
+                return top(p)
+        return []
+
+    return tuple(dict.fromkeys(top(c)))
+
+
 def _move(
-    scene: Scene, family: MoveFamily, name: str, cls: str, witnessed: Witnessed | None, unkept: tuple[str, ...] = ()
+    scene: Scene,
+    family: MoveFamily,
+    name: str,
+    cls: str,
+    witnessed: Witnessed | None,
+    unkept: tuple[str, ...] = (),
+    *,
+    exact: bool = False,
 ) -> list[z3.BoolRef]:
-    """A mover's leg of class ``cls``: its end, the class's shape, not held, and its guard over the named robots."""
+    """A mover's leg of class ``cls``: its end, the class's shape, not held, and its guard over the named robots
+    (``exact``: the named robots are all it sees)."""
     ar = scene.ar
     at = scene.at[name]
     end = (ar.var(f"{name}.end.x"), ar.var(f"{name}.end.y"))
     scene.ends[name] = end
     leg = family.get(cls)
     env = {"me": at, "end": end}
+    # A bridged edge (unkept) whose test has several witness roles: the test passed, not without a witness, so
+    # through the witness of some role; this obligation is the case of the role it names, whose term is asserted
+    # apart (inside the guard an unnamed role's existential is true and would leave the named one free).
+    forced: list[z3.BoolRef] | None = [] if unkept and len(edge_roles(leg.guard)) > 1 else None
+    guard = assumed(leg.guard, scene, name, env, witnessed=witnessed, unkept=unkept, exact=exact, forced=forced)
     return [
         assumed(leg.shape, scene, name, env),
-        z3.Not(assumed(family.at_rest, scene, name, env, positive=False)),
-        assumed(leg.guard, scene, name, env, witnessed=witnessed, unkept=unkept),
+        z3.Not(assumed(family.at_rest, scene, name, env, positive=False, exact=exact)),
+        ar.all([guard, *(forced or [])]),
     ]
+
+
+def connected(ar: Arith, model: Model, robots: list[Pt]) -> z3.BoolRef:
+    """The visibility graph of ``robots`` (a handful) is connected: every cut has an edge across."""
+    n = len(robots)
+    cuts = []
+    for mask in range(1, 2 ** (n - 1)):  # the last robot always on the other side: each cut once
+        side = [bool(mask >> i & 1) for i in range(n - 1)] + [False]
+        across = [
+            sees(ar, model, robots[i], robots[j]) for i in range(n) for j in range(i + 1, n) if side[i] != side[j]
+        ]
+        cuts.append(ar.any(across))
+    return ar.all(cuts)
 
 
 def _after(scene: Scene, name: str) -> Pt:
@@ -315,23 +378,44 @@ def build(
     vacuity: bool = False,
     immediate: bool = False,
     initial: bool = False,
+    witnesses: bool = False,
+    closed: int | None = None,
 ) -> Built:
     """The obligation ``spec`` over ``ar``'s domain; ``vacuity`` keeps only "the legs occur together";
     ``immediate`` leaves out each mover's guard (its shape and at_rest stay): unsat means the claim follows
     from the classes' shapes alone. ``initial``: the named robots also form an initial configuration (at
-    least delta apart, their visibility graph connected): where a counterexample is replayed from."""
+    least delta apart, their visibility graph connected): where a counterexample is replayed from.
+    ``witnesses``: each mover's leg witnesses (:func:`leg_roles`: a robot its leg needs it to see) are named
+    robots too, ``w.MOVER.ROLE``, and each mover's guard is asserted for them (a stronger obligation, still
+    implied: they are robots of the swarm). On a lattice every named robot but a leg witness lies within a box
+    around r that excludes no violation (:func:`_box`; a leg witness is within view of its mover).
+    ``closed``: the named robots and ``closed`` more at rest (``e1``, ...) are the whole swarm, connected, and
+    each guard is read exactly on them (:func:`assumed`'s ``exact``): a stronger question whose answers are
+    candidates for a counterexample, never a proof."""
     at = {"r": ar.origin(), "o": ar.point("o")}
     if spec.form == BRIDGED:
         at["b"] = ar.point("b")
+    classes = {"r": spec.mine, "o": spec.other, "b": spec.witness}
+    leg_witnesses: dict[str, dict[tuple[str, str], str]] = {}
+    if witnesses:
+        for name in list(at):
+            cls = classes[name]
+            if cls == REST:
+                continue
+            for role in leg_roles(family.get(cls).guard):
+                w = f"w.{name}.{role}"
+                at[w] = ar.point(w)
+                leg_witnesses.setdefault(name, {})[(role, "")] = w
+    for k in range(1, (closed or 0) + 1):
+        at[f"e{k}"] = ar.point(f"e{k}")
     scene = Scene(ar, model, at)
     names = list(at)
     asserts: list[z3.BoolRef] = []
     for i, a in enumerate(names):
         asserts += [apart(ar, model, at[a], at[b]) for b in names[i + 1 :]]
     if initial:
-        asserts += _initial(ar, model, [at[n] for n in names])
-    classes = {"r": spec.mine, "o": spec.other, "b": spec.witness}
-    tests: dict[str, Witnessed] = {}
+        asserts += _initial(ar, model, [at[n] for n in names if not n.startswith("w.")])
+    tests: dict[str, dict[tuple[str, str], str | None]] = {}
     if spec.form == KEPT:
         tests = {
             "r": {(role, "o"): None for role in _all_roles(family)},
@@ -339,19 +423,35 @@ def build(
         }
     elif spec.form == BRIDGED:
         tests = {"r": {(spec.role, "o"): "b"}}
+    for name, named in leg_witnesses.items():
+        tests[name] = {**tests.get(name, {}), **named}
     for name in names:
-        cls = classes[name]
+        cls = classes.get(name, REST)
         if cls == REST:
             continue
-        parts = _move(scene, family, name, cls, tests.get(name), ("o",) if spec.form == BRIDGED and name == "r" else ())
+        unkept = ("o",) if spec.form == BRIDGED and name == "r" else ()
+        parts = _move(scene, family, name, cls, tests.get(name), unkept, exact=closed is not None)
         asserts += parts[:2] if immediate else parts
     if spec.form in (KEPT, BRIDGED):
         asserts.append(sees(ar, model, at["r"], at["o"]))
+    if closed is not None:
+        asserts.append(connected(ar, model, list(at.values())))
     bodies = dict(at)
     bodies.update({f"{n}'": _after(scene, n) for n in names})
     if not vacuity:
         asserts.append(_violation(scene, spec))
-    return Built(ar, asserts, bodies, "o")
+    bounds = _box(ar, model, family, [at[n] for n in names if n in ("o", "b")]) if ar.lattice else []
+    return Built(ar, asserts, bodies, "o", bounds=bounds)
+
+
+def _box(ar: Arith, model: Model, family: MoveFamily, points: list[Pt]) -> list[z3.BoolRef]:
+    """On a lattice: ``points`` within a box around r (at the origin) of half-side the larger of the view and
+    ``2 + 2 max_step`` radii. o and b are seen by r (an edge, a bridge) or come within 2 of r's path while
+    both move at most ``max_step`` (a collision), so the box excludes no violation; integers in a box keep the
+    solver's nonlinear integer arithmetic finite."""
+    half = max(view_reach(model), 2 + 2 * Fraction(family.max_step))
+    box = ar.num(-(-half.numerator // half.denominator))
+    return [z3.And(p[i] >= -box, p[i] <= box) for p in points for i in (0, 1)]
 
 
 def _initial(ar: Arith, model: Model, points: list[Pt]) -> list[z3.BoolRef]:
@@ -415,4 +515,17 @@ def argument(model: Model, family: MoveFamily, spec: FamilySpec, built: Built) -
     )
 
 
-__all__ = ["BRIDGED", "FORMS", "KEPT", "LEG", "FamilySpec", "Scene", "argument", "assumed", "build", "specs"]
+__all__ = [
+    "BRIDGED",
+    "FORMS",
+    "KEPT",
+    "LEG",
+    "FamilySpec",
+    "Scene",
+    "argument",
+    "assumed",
+    "build",
+    "edge_roles",
+    "leg_roles",
+    "specs",
+]

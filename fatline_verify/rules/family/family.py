@@ -65,6 +65,10 @@ class MoveFamily:
     """What the family takes from outside itself (written in each obligation's header): empty when nothing."""
     witnesses: dict[str, str] = field(default_factory=dict)
     """What each witness role of the guards stands for, in words."""
+    lattice: bool = False
+    """Whether the prover decides the family's obligations on the model's lattice (integers, exact: PROVED for
+    every swarm size on that lattice) rather than over the reals (every position): for legs whose lengths the
+    reals' nonlinear arithmetic does not decide in time (a sqrt(2)-long diagonal)."""
 
     def __post_init__(self) -> None:
         if not self.classes:

@@ -135,6 +135,30 @@ class Pt(_Value):
         return Pt(self.name, (self.offset[0] + Fraction(dx), self.offset[1] + Fraction(dy)))
 
 
+@dataclass(frozen=True, eq=False)
+class XY(Pt):
+    """A point given by two numbers of the language (:func:`point`): ``point(c.x, me.y - 3)``."""
+
+    cx: Num = field(default_factory=Num)
+    cy: Num = field(default_factory=Num)
+
+    @property
+    def x(self) -> Num:
+        return self.cx + self.offset[0]
+
+    @property
+    def y(self) -> Num:
+        return self.cy + self.offset[1]
+
+    def moved(self, dx: Radii, dy: Radii) -> Pt:
+        return XY("", (self.offset[0] + Fraction(dx), self.offset[1] + Fraction(dy)), self.cx, self.cy)
+
+
+def point(x: Num | Radii, y: Num | Radii) -> Pt:
+    """The point ``(x, y)`` of two numbers of the language (its coordinates may come from different points)."""
+    return XY("", (Fraction(0), Fraction(0)), _num(x), _num(y))
+
+
 me = Pt("me")
 """The deciding robot, at the origin of its snapshot."""
 end = Pt("end")
@@ -309,6 +333,8 @@ class Ground:
 
 
 def _point(p: Pt, g: Ground) -> Point:
+    if isinstance(p, XY):
+        return (_exact(_value(p.x, g)), _exact(_value(p.y, g)))
     base = g.points[p.name]
     rho = g.model.radius
     if not p.offset[0] and not p.offset[1]:
@@ -412,6 +438,7 @@ __all__ = [
     "holds",
     "implies",
     "me",
+    "point",
     "roles",
     "sees",
     "touches",

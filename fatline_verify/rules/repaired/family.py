@@ -21,7 +21,22 @@ from __future__ import annotations
 from typing import Any
 
 from ..family.family import LegClass, MoveFamily
-from ..family.lang import Cond, Pt, all_of, clear, distinct, end, exists, forall, implies, me, sees
+from ..family.lang import (
+    TRUE,
+    Cond,
+    Pt,
+    all_of,
+    clear,
+    clear_of,
+    distinct,
+    end,
+    exists,
+    forall,
+    implies,
+    me,
+    point,
+    sees,
+)
 from .options import RepairClear, RepairEdges, RepairLock, RepairProgress, RepairStep
 
 dx = end.x - me.x
@@ -40,26 +55,74 @@ def _kept(c: Pt, vertical: bool) -> Cond:
     return sees(end, c) & implies(_on_vertical(c), sees(end, c.moved(1, 0)))
 
 
-def _anywhere(b: Pt, c: Pt) -> Cond:
-    """``b`` sees ``c`` wherever c's own move may take it (``repairs._anywhere``): at rest off r's vertical;
-    on it also one radius right, and one up or down if it is above r."""
-    up_down = sees(b, c.moved(0, 1)) & sees(b, c.moved(0, -1))
-    return sees(b, c) & implies(_on_vertical(c), sees(b, c.moved(1, 0)) & implies(c.y > me.y, up_down))
+def _places(c: Pt, corners: bool) -> list[tuple[Cond, Pt]]:
+    """Where a robot ``c`` that r sees may be after the round (``repairs._anywhere``), each place with the
+    condition under which it is listed: at rest; on r's vertical also one radius right, and above r one
+    up or down. With ``corners`` (``repair_progress = corner``): above r only if r sees no robot above c
+    on its vertical (then also right and down); below r by more than 3 with none seen below it, up
+    (ending at most 3 below r), straight or right."""
+    on = _on_vertical(c)
+    out: list[tuple[Cond, Pt]] = [(TRUE, c), (on, c.moved(1, 0))]
+    if not corners:
+        above = on & (c.y > me.y)
+        return [*out, (above, c.moved(0, 1)), (above, c.moved(0, -1))]
+    top = on & (c.y > me.y) & forall(lambda d: ~(_on_vertical(d) & (d.y > c.y)))
+    out += [(top, c.moved(0, 1)), (top, c.moved(0, -1)), (top, c.moved(1, -1))]
+    bottom = on & (c.y < me.y - 3) & forall(lambda d: ~(_on_vertical(d) & (d.y < c.y)))
+    near = c.y + 1 <= me.y - 3  # repairs._anywhere's min(y + 1, -3), as two cases
+    for rise, up in ((near, c.moved(0, 1)), (~near, point(c.x, me.y - 3))):
+        out += [(bottom & rise, up), (bottom & rise, up.moved(1, 0))]
+    return out
 
 
-def _edge(c: Pt, vertical: bool) -> Cond:
-    bridge = exists(lambda b: distinct(b, c) & (b.x > me.x) & sees(end, b) & _anywhere(b, c), role="bridge")
-    return _kept(c, vertical) | bridge
+def _anywhere(b: Pt, c: Pt, corners: bool = False) -> Cond:
+    """``b`` sees ``c`` wherever c's own move may take it (:func:`_places`)."""
+    if not corners:
+        up_down = sees(b, c.moved(0, 1)) & sees(b, c.moved(0, -1))
+        return sees(b, c) & implies(_on_vertical(c), sees(b, c.moved(1, 0)) & implies(c.y > me.y, up_down))
+    return all_of(*(implies(cond, sees(b, p)) for cond, p in _places(c, corners)))
 
 
-def _guard(vertical: bool, extra: Any = None) -> Cond:
+def _edge(c: Pt, vertical: bool, corners: bool = False) -> Cond:
+    """``repairs._edge_kept``: the edge to ``c`` kept, or bridged by a robot right of r (held by the lock);
+    with ``corners`` also by a robot on r's vertical, wherever its own move and c's may take them."""
+    bridge = exists(lambda b: distinct(b, c) & (b.x > me.x) & sees(end, b) & _anywhere(b, c, corners), role="bridge")
+    if not corners:
+        return _kept(c, vertical) | bridge
+
+    def along(b: Pt) -> Cond:
+        mine, theirs = _places(b, True), _places(c, True)
+        parts = [implies(cb, sees(pb, end)) for cb, pb in mine]
+        parts += [implies(cb & cc, sees(pb, pc)) for cb, pb in mine for cc, pc in theirs]
+        return distinct(b, c) & _on_vertical(b) & all_of(*parts)
+
+    return _kept(c, vertical) | bridge | exists(along, role="vertical")
+
+
+def _guard(vertical: bool, extra: Any = None, corners: bool = False, corner_leg: bool = False) -> Cond:
+    """``repairs.allowed`` for every robot c seen: not strictly left (the lock), clear of the swept disc (a
+    corner leg also of c's move right when c is on r's vertical), ``extra``, and the edge kept or bridged."""
+
     def each(c: Pt) -> Cond:
-        parts = [c.x >= me.x, clear(c), _edge(c, vertical)]
+        parts = [c.x >= me.x, clear(c)]
+        if corner_leg:
+            parts.append(implies(_on_vertical(c), clear_of(me, end, c, c.moved(1, 0))))
+        parts.append(_edge(c, vertical, corners))
         if extra is not None:
             parts.append(extra(c))
         return all_of(*parts)
 
     return forall(each)
+
+
+def _not_above(c: Pt) -> Cond:
+    """The top's condition: ``c`` is not above r on its vertical."""
+    return ~(_on_vertical(c) & (c.y > me.y))
+
+
+def _below_each(c: Pt) -> Cond:
+    """The bottom's condition: a robot on r's vertical is above it, and the leg ends at least 3 below it."""
+    return implies(_on_vertical(c), (c.y > me.y) & (end.y <= c.y - 3))
 
 
 HORIZONTAL = LegClass(
@@ -71,13 +134,13 @@ HORIZONTAL = LegClass(
 TOP = LegClass(
     "top",
     (dx == 0) & (dy != 0) & (dy >= -1) & (dy <= 1),
-    _guard(True, lambda c: ~(_on_vertical(c) & (c.y > me.y))),
+    _guard(True, _not_above),
     "(0, dy) with 0 < |dy| <= 1, no robot seen above on its vertical",
 )
 BOTTOM = LegClass(
     "bottom",
     (dx == 0) & (dy > 0) & (dy <= 1),
-    _guard(True, lambda c: implies(_on_vertical(c), (c.y > me.y) & (end.y <= c.y - 3))),
+    _guard(True, _below_each),
     "(0, dy) with 0 < dy <= 1, every robot seen on its vertical above it, ending >= 3 below each",
 )
 

@@ -2,7 +2,8 @@
 
 Not the paper's algorithm: a table ``fatline synth`` found (fatline_verify/synth/, docs/synth.md), an
 oblivious rule from a robot's view (the robots within ``rad_v``, relative to it, sorted) to one leg of the
-repaired family (``fatline reach``'s, under its lock) or to staying. The table was searched, and replayed
+repaired family (``fatline reach``'s, under its lock) or to staying: a policy inside that move family
+(:func:`family`), which ``fatline prove`` proves safe. The table was searched, and replayed
 through the executable model, for the lattice (``q``), ``rad_v``, window, robot counts and scheduler its
 file names; a view it was not searched for stays (``unseen``): beyond those bounds nothing is claimed.
 """
@@ -19,6 +20,8 @@ from ...errors import InvalidModel
 from ...integrity import sealed
 from ...synth.table import Table, parse_view
 from ..decision import ORIGIN, Decision
+from ..family.family import MoveFamily
+from ..repaired.whatif import legs_family
 
 TABLES = Path(__file__).resolve().parent / "tables"
 """The shipped tables: ``fatline synth --json`` files (one rule set each, ``table-<file stem>``)."""
@@ -38,6 +41,9 @@ class Shipped:
     name: str
     table: Table
     summary: str
+    legs: tuple[str, ...] = ()
+    """The leg kinds it was searched over (``fatline synth --with``'s family: ``right``, ``vertical``, and the
+    what-if ``left``, ``left-alone``, ``corner``)."""
 
 
 def load(path: Path) -> Shipped:
@@ -55,7 +61,21 @@ def load(path: Path) -> Shipped:
         f"searched and replayed for {lo}..{hi} robots in {w}x{h} at q = {data['q']}, rad_v = {data['rad_v']}, "
         f"{data['scheduler']}; unseen views stay."
     )
-    return Shipped(f"table-{path.stem}", Table.from_json(int(data["q"]), int(data["rad_v"]), last["table"]), summary)
+    table = Table.from_json(int(data["q"]), int(data["rad_v"]), last["table"])
+    return Shipped(f"table-{path.stem}", table, summary, tuple(data["legs"]))
+
+
+def family(shipped: Shipped) -> Any:
+    """The table's move family: the one ``fatline synth`` searched (its leg kinds, on the model's lattice,
+    :func:`fatline_verify.rules.repaired.whatif.legs_family`). Every leg of the table is one the family admits
+    from its view, and a view the table does not list stays: a table is a policy inside the family, so the
+    family's safety obligations are the table's (``fatline prove``), and the checker's ``in-family`` holds
+    each run to it."""
+
+    def of(model: Any) -> MoveFamily:
+        return legs_family(model, shipped.legs)
+
+    return of
 
 
 def decider(shipped: Shipped) -> Any:
@@ -80,4 +100,4 @@ def decider(shipped: Shipped) -> Any:
     return decide
 
 
-__all__ = ["LABELS", "TABLES", "Shipped", "decider", "load", "parse_view"]
+__all__ = ["LABELS", "TABLES", "Shipped", "decider", "family", "load", "parse_view"]
