@@ -17,6 +17,8 @@ from fatline_verify.goals import registry as goals
 from fatline_verify.goals.shapes import (
     at_one_point,
     at_one_point_batch,
+    discs_connected,
+    discs_connected_batch,
     in_disc,
     in_disc_batch,
     on_circle,
@@ -42,6 +44,10 @@ def test_vectorised_shapes_equal_the_exact_ones(n: int) -> None:
         got = on_circle_batch(states, r).tolist()
         assert got == [on_circle(s, r) for s in as_points]
     assert any(on_circle(s, 0) for s in as_points if len(set(s)) >= 3) or n < 3  # the test can tell
+    for reach2 in (0, 1, 2, 4, 5):
+        got = discs_connected_batch(states, reach2).tolist()
+        assert got == [discs_connected(s, reach2) for s in as_points]
+        assert n == 1 or reach2 == 0 or (any(got) and not all(got))  # the test can tell
 
 
 def test_shapes_on_known_configurations() -> None:
@@ -56,6 +62,12 @@ def test_shapes_on_known_configurations() -> None:
     tri = [(0, 0), (4, 0), (2, 3)]  # circumradius 13/6: diameter 13/3 > 4
     assert in_disc(tri, Fraction(13, 3)) and not in_disc(tri, Fraction(43, 10))
     assert in_disc([(Fraction(1, 2), 0), (Fraction(1, 2), 0)], 0) and at_one_point([(1, 2), (1, 2)])
+    # discs of radius 1 (reach2 = 4): a chain touching end to end holds together, a gap of any size splits it
+    chain = [(0, 0), (2, 0), (2, 2), (4, 2)]
+    assert discs_connected(chain, 4) and not discs_connected([*chain[:3], (5, 2)], 4)
+    assert not discs_connected([(0, 0), (2, 0), (10, 0), (12, 0)], 4)  # two touching pairs, apart
+    assert discs_connected([(0, 0), (Fraction(6, 5), Fraction(8, 5))], 4)  # 2 apart exactly, off the lattice
+    assert not discs_connected([(0, 0), (Fraction(6, 5), Fraction(81, 50))], 4) and discs_connected([(3, 3)], 0)
 
 
 def test_the_compiled_kernel_judges_point_as_the_registry() -> None:
@@ -144,11 +156,45 @@ def test_every_engine_gives_the_same_verdicts_for_a_goal_without_a_kernel(goal: 
     assert liveness == {"VIOLATED", "HOLDS_WITHIN_BOUNDS"}  # the goal decides something here
 
 
+def test_touching_is_judged_alike_by_every_engine_and_is_not_a_line() -> None:
+    """``touching`` (fat robots' gathering) has no compiled kernel: every engine explores the same states
+    and gives the same verdicts; the 2-robot deadlock it finds is on one vertical line, the paper's goal,
+    yet its discs are apart, so it is a deadlock short of this goal and not of the paper's."""
+    from fatline_verify.check.checker import check
+
+    model = _model("touching")
+    got = {}
+    for engine in ("scalar", "fast", "compiled"):
+        result = check(model, (2, 3), (7, 7), engine=engine)
+        got[engine] = (
+            [(r.lemma.value, r.robots, r.verdict.value) for r in result.results],
+            [(s.states, s.transitions) for s in result.stats],
+        )
+        progress = next(r for r in result.results if r.lemma.value == "progress" and r.robots == 2)
+        assert progress.witness is not None and progress.witness["rounds"] == []
+        stuck = [tuple(p) for p in progress.witness["initial"]]
+        assert len({x for x, _ in stuck}) == 1 and not discs_connected(stuck, model.contact2)
+        assert goals.holds(stuck, _model("vertical-line")) and not goals.holds(stuck, model)
+    assert got["scalar"] == got["fast"] == got["compiled"]
+
+
+def test_touching_between_lattice_points_and_for_points() -> None:
+    """Async positions in halves are judged by the vectorised check at that unit, as the exact one does;
+    a rule set of point robots cannot name a goal of discs."""
+    model = _model("touching")
+    halves = np.array([[[0, 0], [4, 0]], [[0, 0], [5, 0]], [[1, 1], [4, 3]], [[0, 0], [3, 3]]], dtype=np.int64)
+    got = goals.judge_batch(halves, model, unit=2)
+    want = [goals.holds([(Fraction(x, 2), Fraction(y, 2)) for x, y in s], model) for s in halves.tolist()]
+    assert got.tolist() == want == [True, False, True, False]
+    with pytest.raises(InvalidModel, match="goal='touching': a goal for discs only"):
+        model_from_mapping({"name": "g", "rules": "ando", "options": {"goal": "touching"}})
+
+
 def test_the_prover_claims_nothing_for_a_goal_it_does_not_encode() -> None:
     from fatline_verify.prove.goals import goal_problem
 
     assert goal_problem(load_model("paper")) == ""
-    for goal in ("circle", "near-gathering", "any-line"):
+    for goal in ("circle", "near-gathering", "any-line", "touching"):
         assert goal_problem(_model(goal)).endswith("this goal is not encoded, so nothing is claimed")
 
 

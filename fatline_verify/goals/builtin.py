@@ -1,7 +1,7 @@
 """This package's goals, registered on import: the paper's three readings of "form a straight line"
 (the ``goal`` option's readings) and the goals of other published algorithms (gathering at a point,
-near-gathering / epsilon-convergence, a circle). What each means exactly is its ``says``; docs/plugins.md
-lists them ("Goals").
+near-gathering / epsilon-convergence, a circle, fat robots' gathering: discs that touch and hold
+together). What each means exactly is its ``says``; docs/plugins.md lists them ("Goals").
 
 Lengths a goal takes as parameters (``eps``, ``radius``) are whole **lattice units**, as everything a
 rule set's ``decide`` sees (one robot radius is ``q`` of them): exact on the lattice the search explores.
@@ -18,7 +18,16 @@ from ..model.geometry import collinear, width_at_most
 from ..model.options import Goal as Reading
 from ..model.seams import Param
 from .registry import KERNELS, Goal, register_goal
-from .shapes import at_one_point, at_one_point_batch, in_disc, in_disc_batch, on_circle, on_circle_batch
+from .shapes import (
+    at_one_point,
+    at_one_point_batch,
+    discs_connected,
+    discs_connected_batch,
+    in_disc,
+    in_disc_batch,
+    on_circle,
+    on_circle_batch,
+)
 
 Point = tuple[Any, Any]
 
@@ -136,6 +145,37 @@ CIRCLE = _sized(
     on_circle_batch,
 )
 
+
+def _touching(state: Sequence[Point], model: Any) -> bool:
+    return discs_connected(state, model.contact2)
+
+
+def _touching_batch(pos: np.ndarray, model: Any, unit: int = 1) -> np.ndarray:
+    return discs_connected_batch(pos, model.contact2 * unit * unit)
+
+
+TOUCHING = register_goal(
+    Goal(
+        "touching",
+        "gathering of fat robots: the union of the discs is connected, i.e. the graph joining two robots whose "
+        "discs touch (centres at most 2 radii apart) is connected, so every robot touches another (Czyzowicz, "
+        "Gasieniec, Pelc 2009; Agathangelou, Georgiou, Mavronicolas 2013; discs only)",
+        _touching,
+        _touching_batch,
+        robots=("discs",),
+        scaled=True,
+    )
+)
+"""Fat robots' gathering, as the fat-robot gathering papers define it: Czyzowicz, Gasieniec and Pelc,
+"Gathering few fat mobile robots in the plane" (Theoretical Computer Science 410, 2009), abstract:
+"Gathering such robots means forming a configuration for which the union of all discs representing them
+is connected"; Agathangelou, Georgiou and Mavronicolas, "A distributed algorithm for gathering many fat
+mobile robots in the plane" (PODC 2013; arXiv:1209.3904), abstract, condition (c): "The configuration is
+connected, that is, every robot touches another robot and all robots together form a connected
+formation" (their conditions (a), a convex hull with every robot on it, and (b), every robot seeing every
+other past the discs in between, are theirs alone and not part of this goal). Closed discs of one radius
+touch when their centres are at most 2 radii apart: ``model.contact2``, compared squared."""
+
 __all__ = [
     "ANY_LINE",
     "CIRCLE",
@@ -143,5 +183,6 @@ __all__ = [
     "LINE_MEETS_DISCS",
     "NEAR_GATHERING",
     "POINT",
+    "TOUCHING",
     "VERTICAL_LINE",
 ]

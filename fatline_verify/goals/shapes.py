@@ -1,4 +1,5 @@
-"""Exact tests of the shapes a swarm may have to form beyond a line: one point, a small disc, a circle.
+"""Exact tests of the shapes a swarm may have to form beyond a line: one point, a small disc, a circle,
+discs that hold together.
 
 Each test comes twice: on the executable model's positions (``int`` or :class:`~fractions.Fraction`,
 one state) and vectorised over ``(m, n, 2)`` integer arrays (any unit: every length a test takes is
@@ -14,6 +15,9 @@ differential test holds the two to the same answers.
   two distinct points always are (with radius ``r`` when they are at most ``2 r`` apart); three or more
   are when they are not collinear and every other point passes the four-point determinant test against
   the circle of three non-collinear ones.
+- **Discs that hold together**: the union of the closed discs of radius ``r`` about the centres is
+  connected, i.e. the graph joining two centres at most ``2 r`` apart (their discs touch or overlap)
+  is connected; compared as squared distances, ``reach2 = (2 r)^2``.
 """
 
 from __future__ import annotations
@@ -93,6 +97,21 @@ def on_circle(points: Sequence[Point], radius: Any = 0) -> bool:
     return ab2 * bc2 * ca2 == 4 * cr * cr * radius * radius  # R = |ab||bc||ca| / (2 |cross|)
 
 
+def discs_connected(points: Sequence[Point], reach2: Any) -> bool:
+    """Whether the graph joining two points at squared distance at most ``reach2`` is connected (exact):
+    for discs of radius ``r`` and ``reach2 = (2 r)^2``, whether the union of the discs is connected."""
+    if len(points) <= 1:
+        return True
+    seen, todo = {0}, [0]
+    while todo:
+        a = points[todo.pop()]
+        for k, b in enumerate(points):
+            if k not in seen and (a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2 <= reach2:
+                seen.add(k)
+                todo.append(k)
+    return len(seen) == len(points)
+
+
 # --- vectorised: (m, n, 2) int64 ----------------------------------------------------------------------
 def _distinct_count(pos: np.ndarray) -> np.ndarray:
     """Per state, how many distinct points it holds."""
@@ -161,4 +180,26 @@ def on_circle_batch(pos: np.ndarray, radius: int = 0) -> np.ndarray:
     return out | ((count >= 3) & found)  # type: ignore[no-any-return]
 
 
-__all__ = ["at_one_point", "at_one_point_batch", "in_disc", "in_disc_batch", "on_circle", "on_circle_batch"]
+def discs_connected_batch(pos: np.ndarray, reach2: int) -> np.ndarray:
+    """:func:`discs_connected` per state (``reach2`` in the positions' unit, squared): the closure of the
+    adjacency matrix, one robot's row grown ``n - 1`` times."""
+    m, n, _ = pos.shape
+    if n <= 1:
+        return np.ones(m, dtype=bool)
+    near = ((pos[:, :, None, :] - pos[:, None, :, :]) ** 2).sum(axis=-1) <= reach2
+    reached = near[:, 0, :].copy()
+    for _ in range(n - 2):
+        reached |= (reached[:, :, None] & near).any(axis=1)
+    return reached.all(axis=1)  # type: ignore[no-any-return]
+
+
+__all__ = [
+    "at_one_point",
+    "at_one_point_batch",
+    "discs_connected",
+    "discs_connected_batch",
+    "in_disc",
+    "in_disc_batch",
+    "on_circle",
+    "on_circle_batch",
+]
