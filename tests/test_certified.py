@@ -8,6 +8,7 @@ import itertools
 import json
 from collections import Counter
 from dataclasses import replace
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
@@ -18,7 +19,7 @@ from fatline_verify.check.checker import check
 from fatline_verify.errors import FatlineError
 from fatline_verify.lemmas.properties import SAFETY, Lemma, Verdict
 from fatline_verify.model.config import load_model
-from fatline_verify.model.geometry import path_point_dist2, segment_segment_dist2
+from fatline_verify.model.geometry import dist2, path_point_dist2, segment_segment_dist2
 from fatline_verify.model.swarm import is_connected
 from fatline_verify.repair.against import GONE_ON_ITS_ROUNDS, corpus_against
 from fatline_verify.rules import registry
@@ -221,6 +222,18 @@ def test_the_random_rounds_moved_robots_and_several_at_once():
         pytest.skip("run with the property test")
     assert sum(m > 0 for m in ROUNDS) > len(ROUNDS) // 4
     assert any(m > 1 for m in ROUNDS)
+
+
+def test_off_the_lattice_two_movers_out_of_view_collide():
+    """The argument for movers out of view holds on the lattice only: at quarter radii (off the lattice
+    q = 1) r0 contracts up and r1, out of its view, steps down-right into it; r2 keeps r0 from being alone.
+    The configuration is a legal start (connected, discs apart), and the executable model plays the round."""
+    model = certified(1)
+    state = ((Fraction(0), Fraction(0)), (Fraction(-5, 2), Fraction(13, 4)), (Fraction(0), Fraction(29, 8)))
+    assert is_connected(state, model) and not model.sees(dist2(state[0], state[1]))
+    result = play_round(state, (0, 1), model)
+    assert [d.rule for d in (result.decisions[0], result.decisions[1])] == ["contract-up", "down-right"]
+    assert {v.lemma for v in result.violations} == {Lemma.NO_COLLISION}
 
 
 def test_two_movers_that_do_not_see_each_other_never_meet_on_the_unit_lattice():

@@ -141,7 +141,13 @@ def query_unsat(model: Model, task: Any, query: str, budget: float = BUDGET) -> 
     return _unsat(build(**{query: True}), budget)
 
 
-def decided(fn: Callable[..., ProofResult], model: Model, task: Any, **kwargs: Any) -> ProofResult | Pending:
+def decided(fn: Callable[..., ProofResult], model: Model, task: Any, **kwargs: Any) -> ProofResult:
+    """``fn(model, task, **kwargs)`` (one obligation decided), then its basis if PROVED, in this process."""
+    result = fn(model, task, **kwargs)
+    return classified(result, basis_of(model, task, result))
+
+
+def deferred(fn: Callable[..., ProofResult], model: Model, task: Any, **kwargs: Any) -> ProofResult | Pending:
     """``fn(model, task, **kwargs)`` (one obligation decided): what :func:`fatline_verify.prove.prover.prove`
     runs in each obligation's fresh process. A PROVED result whose basis needs the solver comes back
     :class:`Pending`, with its queries' digests: the same query asked for several obligations (the case's
@@ -211,5 +217,6 @@ __all__ = [
     "counts",
     "counts_text",
     "decided",
+    "deferred",
     "resolve",
 ]

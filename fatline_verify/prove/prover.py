@@ -199,7 +199,7 @@ def prove(
     if not tasks:
         return []
     check_encoded(model)
-    from .basis import Pending, decided, resolve
+    from .basis import Pending, deferred, resolve
     from .family import prove_family, prove_views
     from .live import prove_live
 
@@ -209,7 +209,7 @@ def prove(
     calls: list[tuple[Callable[..., ProofResult], tuple[Any, ...], dict[str, Any]]] = []
     for task in (tasks[k] for k in solved):
         if isinstance(task, FamilySpec):
-            calls.append((decided, (prove_family, model, task), {"timeout": timeout, "out": out}))
+            calls.append((deferred, (prove_family, model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, LiveSpec):
             calls.append((prove_live, (model, task), {"timeout": timeout, "out": out, "given": tuple(deadlocks)}))
         elif isinstance(task, Spec):
@@ -219,7 +219,7 @@ def prove(
             kwargs = {"timeout": timeout, "out": out, "note": note, "known": known, "given": tuple(given)}
             if corpus:
                 kwargs["corpus"] = corpus_known(paper_part(model), task.key)
-            calls.append((decided, (prove_spec, paper_part(model), task), kwargs))
+            calls.append((deferred, (prove_spec, paper_part(model), task), kwargs))
         else:
             calls.append((prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out}))
     results: list[ProofResult | None] = [None] * len(tasks)
