@@ -149,6 +149,7 @@ def test_each_kind_is_keyed_by_its_own_builder_and_rule_set():
             assert ("prove/smt/liveness.py" in got) == (kind == "live"), (kind, model.name)
             assert ("rules/repaired/algorithm.py" in got) == (model is repaired and kind != "coverage"), kind
             assert "rules/paper/algorithm.py" in got
+            assert "prove/digests.py" not in got, kind  # what keys the rows is no source of theirs
             assert ("prove/search.py" in got) == (kind != "coverage"), kind
 
 

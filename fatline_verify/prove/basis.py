@@ -22,6 +22,7 @@ answer leaves the stronger kind unclaimed (a row is called vacuous or immediate 
 
 from __future__ import annotations
 
+import hashlib
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
@@ -126,11 +127,12 @@ class Pending:
 
 
 def _text_digest(built: Any) -> str:
-    from .digests import text_sha256
+    """SHA-256 of ``built``'s SMT-LIB2 without its comment (not :mod:`~fatline_verify.prove.digests`'s:
+    what keys the rows is no source of theirs)."""
     from .smt.solving import smt2
 
     built.comment = ""
-    return text_sha256(smt2(built))
+    return hashlib.sha256(smt2(built).encode("utf-8")).hexdigest()
 
 
 def query_unsat(model: Model, task: Any, query: str, budget: float = BUDGET) -> bool:

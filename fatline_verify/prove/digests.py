@@ -188,23 +188,29 @@ def _own_rules(model: Any) -> frozenset[str]:
     return frozenset(p for p in _rule_packages() if p.endswith(".paper") or module.startswith(f"{p}."))
 
 
-def _has_family(model: Any) -> bool:
-    """Whether ``model``'s rule set declares a move family. One that declares none never runs the
+def _family_module(model: Any) -> str | None:
+    """The module that declares ``model``'s rule set's move family (``""``: a family given as an object,
+    whose module is its class's; ``None``: it declares none). One that declares none never runs the
     family language or its admission: the ``in-family`` lemma's test and the registry's look-up stop at
-    its ``family=None``, so an edit to :data:`INFRASTRUCTURE` stales no row of its models."""
+    its ``family=None``, so an edit to :data:`INFRASTRUCTURE` stales no row of its models. One that
+    declares a family holds every replayed decision to it: the declaring module is followed for every kind."""
+    from ..provenance import _module_of
     from ..rules import registry
 
-    return registry.of(model).family is not None
+    declared = registry.of(model).family
+    if declared is None:
+        return None
+    return _module_of(declared) if callable(declared) else ""
 
 
-_WALKS: dict[tuple[str, frozenset[str], bool], tuple[list[Path], tuple[str, ...]]] = {}
+_WALKS: dict[tuple[str, frozenset[str], str | None], tuple[list[Path], tuple[str, ...]]] = {}
 """:func:`kind_sources`'s answers, each with the digests of the files it read (an edit walks again)."""
 
 
 def kind_sources(kind: str, model: Any) -> list[Path]:
     """The source files whose code a ``kind`` row of ``model`` is keyed by, sorted (see the module
     docstring for what is followed and what is left out)."""
-    own, family = _own_rules(model), _has_family(model)
+    own, family = _own_rules(model), _family_module(model)
     known = _WALKS.get((kind, own, family))
     if known is not None and tuple(_file_digest(p) for p in known[0]) == known[1]:
         return list(known[0])
@@ -213,11 +219,11 @@ def kind_sources(kind: str, model: Any) -> list[Path]:
     return list(paths)
 
 
-def _walk(kind: str, own: frozenset[str], family: bool) -> list[Path]:
+def _walk(kind: str, own: frozenset[str], family: str | None) -> list[Path]:
     spec = KINDS[kind]
     others = frozenset().union(*(k.own for name, k in KINDS.items() if name != kind))
     skipped_rules = _rule_packages() - own
-    if not family:
+    if family is None:
         skipped_rules |= {f"{PACKAGE}.rules.{p}" for p in INFRASTRUCTURE}
 
     def left_out(module: str) -> bool:
@@ -227,6 +233,8 @@ def _walk(kind: str, own: frozenset[str], family: bool) -> list[Path]:
 
     seen: set[str] = set()
     todo = list(spec.entries)
+    if family and family.startswith(f"{PACKAGE}."):
+        todo.append(family)
     if spec.decides:
         for package in sorted(own):
             directory = ROOT.joinpath(*package.split(".")[1:])

@@ -55,7 +55,42 @@ def figures(proofs: Path) -> dict[str, int]:
     out["open_solution"] = sum(r["reason"].startswith("a solution exists") for r in open_rows)
     out["open_clock"] = sum("stopped by the wall clock" in r["reason"] for r in open_rows)
     out["certificates"] = sum(bool(r.get("certificate_sha256")) for r in every)
+    out |= stales(proofs)
     return out
+
+
+STALES = {
+    "stales_repaired_rules": "rules/repaired/algorithm.py",
+    "stales_repaired_family": "rules/repaired/family.py",
+    "stales_family_builder": "prove/smt/family.py",
+    "stales_family_language": "rules/family/lang.py",
+    "stales_liveness": "prove/smt/liveness.py",
+    "stales_refine": "prove/refine.py",
+    "stales_claims": "prove/smt/claims.py",
+    "stales_search": "prove/search.py",
+    "stales_paper_rules": "rules/paper/algorithm.py",
+}
+"""Source files (under the package) whose committed dependants ``docs/prover.md`` counts."""
+
+
+def stales(proofs: Path) -> dict[str, int]:
+    """``rows``: the committed rows; per :data:`STALES` file, how many of them an edit to its code stales
+    (the rows whose sources, :func:`fatline_verify.prove.digests.kind_sources`, include it)."""
+    from ..model.config import load_model
+    from .digests import ROOT, kind_of, kind_sources
+    from .tasks import row_key, task_key, tasks_for
+
+    counts = dict.fromkeys(STALES, 0)
+    total = 0
+    for path in sorted(proofs.glob("*/results.json")):
+        model = load_model(path.parent.name)
+        tasks = {task_key(t): t for t in tasks_for(model, two_movers=True)}
+        for row in _rows(proofs, path.parent.name):
+            total += 1
+            sources = {p.relative_to(ROOT).as_posix() for p in kind_sources(kind_of(tasks[row_key(row)]), model)}
+            for name, file in STALES.items():
+                counts[name] += file in sources
+    return {"rows": total, **counts}
 
 
 CLAIMS: tuple[tuple[str, str], ...] = (
@@ -88,6 +123,17 @@ CLAIMS: tuple[tuple[str, str], ...] = (
         "{open_clock} were stopped by the wall clock",
     ),
     ("README.md", "`python -m fatline_verify.prove.certify proofs` ({certificates} certificates,"),
+    (
+        "docs/prover.md",
+        "What an edit to a file's code stales, of the {rows} committed rows: `rules/repaired/algorithm.py` "
+        "{stales_repaired_rules} (the repaired model's); `rules/repaired/family.py` {stales_repaired_family} and "
+        "the family language `rules/family/lang.py` {stales_family_language} (every row of a model whose rule set "
+        "declares a family: its replays hold each decision to it); `prove/smt/family.py` {stales_family_builder} "
+        "(the family rows); `prove/smt/liveness.py` {stales_liveness} (the liveness rows); `prove/refine.py` "
+        "{stales_refine} (the coverage rows); `prove/smt/claims.py` {stales_claims} (the per-case rows); the shared "
+        "search (`prove/search.py`) {stales_search} and the paper's rules (`rules/paper/algorithm.py`, which every "
+        "per-case obligation encodes) {stales_paper_rules}.",
+    ),
 )
 """Each sentence of a document that quotes the committed rows, as a template over :func:`figures`."""
 
