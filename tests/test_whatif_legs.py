@@ -208,3 +208,33 @@ def test_the_what_if_verdicts_are_those_of_the_hand_built_obligations(with_, tmp
 )
 def test_the_what_if_verdicts_are_those_of_the_hand_built_obligations_everywhere(with_, q, tmp_path, capsys):
     _golden_case(with_, q, tmp_path, capsys)
+
+
+def test_a_leg_witness_may_be_a_robot_the_obligation_names():
+    """A leg's witness (the robot below a top-corner mover) may be the other mover itself: r at (0, 0) takes
+    its top-corner leg to (1, -1) seeing o below it and a robot at (3, 0) ahead; o, 4 below, takes its
+    bottom leg up. The concrete interpreter admits both legs, so the obligation with the witnesses named
+    must keep this configuration (sat): naming a witness apart from every other robot left it out, and an
+    unsat there would have been a PROVED the guards do not earn."""
+    import z3
+
+    from fatline_verify.prove.smt.cases import Arith
+    from fatline_verify.prove.smt.family import FamilySpec, build
+    from fatline_verify.schedulers.round import snapshot
+
+    model = repaired(1)
+    family = legs_family(model, frozenset({"corner"}))
+    state = ((0, 0), (0, -4), (3, 0))
+    assert family.classify(snapshot(state, 0, model), (1, -1), model) == "top-corner"
+    assert family.classify(snapshot(state, 1, model), (0, 1), model) == "bottom"
+    spec = FamilySpec(Lemma.NO_COLLISION, "leg", "top-corner", "bottom")
+    for witnesses in (False, True):
+        built = build(Arith(1), model, family, spec, vacuity=True, witnesses=witnesses)
+        solver = z3.Solver(ctx=built.ar.ctx)
+        solver.add(*built.assertions, *built.bounds)
+        pin = {"o.x": 0, "o.y": -4, "r.end.x": 1, "r.end.y": -1, "o.end.x": 0, "o.end.y": -3}
+        if witnesses:
+            pin |= {"w.r.ahead.x": 3, "w.r.ahead.y": 0}
+        solver.add(*(z3.Int(name, built.ar.ctx) == value for name, value in pin.items()))
+        solver.set("timeout", 60000)
+        assert solver.check() == z3.sat, witnesses

@@ -201,7 +201,8 @@ def assumed(
                 inner = {**env, v: scene.at[u]}
                 term = rec(body, True, inner, (*bound, u))
                 if u in unkept:  # the test for u passed, but not without its witness
-                    bare = {key: None for key in witnessed or {} if key[1] == u}
+                    # every role of the body at u false: exactly "the test fails without its witnesses"
+                    bare = {(role, u): None for role in roles(body)}
                     term = z3.And(
                         term,
                         z3.Not(assumed(body, scene, mover, inner, positive=False, witnessed=bare, bound=(*bound, u))),
@@ -214,7 +215,16 @@ def assumed(
                 w = witnessed[key]
                 if w is None:
                     return ar.false()
-                term = z3.And(sees(ar, model, me, scene.at[w]), rec(body, positive, {**env, v: scene.at[w]}, bound))
+                # A leg's witness (outside every forall, named w.MOVER.ROLE) may be any robot the mover sees:
+                # a named one (o, b, the other mover, another witness) or one more robot, w. So the role is
+                # the disjunction over them; w, unbounded, can stand far from every robot when it is not needed.
+                at = [w, *(u for u in others if u != w)] if key[1] == "" and w.startswith("w.") else [w]
+                term = ar.any(
+                    [
+                        z3.And(sees(ar, model, me, scene.at[u]), rec(body, positive, {**env, v: scene.at[u]}, bound))
+                        for u in at
+                    ]
+                )
                 if forced is not None and positive:
                     forced.append(term)
                 return term
