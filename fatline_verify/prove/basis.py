@@ -22,9 +22,8 @@ answer leaves the stronger kind unclaimed (a row is called vacuous or immediate 
 
 from __future__ import annotations
 
-import hashlib
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from ..lemmas.properties import Verdict
@@ -89,8 +88,7 @@ def _builder(model: Model, task: Any) -> Callable[..., Any] | None:
 
 def basis_of(model: Model, task: Any, result: ProofResult, budget: float = BUDGET) -> str:
     """The kind of a PROVED ``result`` of ``task`` under ``model`` (the model its obligation was built
-    for); ``""`` for any other verdict or a task without a case (the global form). One process asks
-    both queries; :func:`decided` and :func:`resolve` ask each distinct query once per run."""
+    for); ``""`` for any other verdict or a task without a case (the global form)."""
     build = _builder(model, task)
     if result.verdict is not Verdict.PROVED or build is None:
         return ""
@@ -111,86 +109,11 @@ def classified(result: ProofResult, basis: str) -> ProofResult:
     return replace(result, basis=basis, reason=reason)
 
 
-QUERIES = ("vacuity", "immediate")
-"""The two queries of a PROVED row's basis, in the order they are asked."""
-
-
-@dataclass(frozen=True)
-class Pending:
-    """A PROVED result whose basis is still to be asked (:func:`resolve`): the model and task its queries
-    are built from, and the digest of each query's SMT-LIB2 text (:data:`QUERIES`)."""
-
-    result: ProofResult
-    model: Model
-    task: Any
-    texts: tuple[str, str]
-
-
-def _text_digest(built: Any) -> str:
-    """SHA-256 of ``built``'s SMT-LIB2 without its comment (not :mod:`~fatline_verify.prove.digests`'s:
-    what keys the rows is no source of theirs)."""
-    from .smt.solving import smt2
-
-    built.comment = ""
-    return hashlib.sha256(smt2(built).encode("utf-8")).hexdigest()
-
-
-def query_unsat(model: Model, task: Any, query: str, budget: float = BUDGET) -> bool:
-    """Whether ``task``'s ``query`` (:data:`QUERIES`) is shown unsat within ``budget`` (in its own
-    process, as :func:`resolve` runs it)."""
-    build = _builder(model, task)
-    assert build is not None
-    return _unsat(build(**{query: True}), budget)
-
-
 def decided(fn: Callable[..., ProofResult], model: Model, task: Any, **kwargs: Any) -> ProofResult:
-    """``fn(model, task, **kwargs)`` (one obligation decided), then its basis if PROVED, in this process."""
+    """``fn(model, task, **kwargs)`` (one obligation decided), then its basis if PROVED: what
+    :func:`fatline_verify.prove.prover.prove` runs in each obligation's fresh process."""
     result = fn(model, task, **kwargs)
     return classified(result, basis_of(model, task, result))
-
-
-def deferred(fn: Callable[..., ProofResult], model: Model, task: Any, **kwargs: Any) -> ProofResult | Pending:
-    """``fn(model, task, **kwargs)`` (one obligation decided): what :func:`fatline_verify.prove.prover.prove`
-    runs in each obligation's fresh process. A PROVED result whose basis needs the solver comes back
-    :class:`Pending`, with its queries' digests: the same query asked for several obligations (the case's
-    firing condition, alike for every claim of one form) is then asked once (:func:`resolve`)."""
-    result = fn(model, task, **kwargs)
-    build = _builder(model, task)
-    if result.verdict is not Verdict.PROVED or build is None:
-        return result
-    if any(word in result.reason for word in FOUND_VACUOUS):
-        return classified(result, VACUOUS)
-    texts = (_text_digest(build(vacuity=True)), _text_digest(build(immediate=True)))
-    return Pending(result, model, task, texts)
-
-
-def resolve(
-    pending: dict[int, Pending],
-    workers: int,
-    done: Callable[[int, ProofResult], None],
-    run: Callable[..., None],
-) -> None:
-    """Each :class:`Pending` result classified and handed to ``done``: every distinct vacuity query asked
-    once, each in its own fresh process (``run``: :func:`fatline_verify.fresh.run_fresh`), then every
-    distinct immediacy query of the rows that are not vacuous. A query's answer depends on its text and
-    its budget only (a fresh process each), so a row's basis is what asking its own queries gives."""
-    answers: dict[str, bool] = {}
-    for k, query in enumerate(QUERIES):
-        wanted: dict[str, Pending] = {}
-        for p in pending.values():
-            if k == 0 or not answers[p.texts[0]]:
-                wanted.setdefault(p.texts[k], p)
-        keys = list(wanted)
-        calls = [(query_unsat, (p.model, p.task, query), {}) for p in wanted.values()]
-
-        def answered(j: int, unsat: bool, keys: list[str] = keys) -> None:
-            answers[keys[j]] = unsat
-
-        run(calls, workers, answered, limit=BUDGET * 4, overrun=lambda j, seconds: False)
-    for i, p in pending.items():
-        vacuous = answers[p.texts[0]]
-        basis = VACUOUS if vacuous else IMMEDIATE if answers[p.texts[1]] else SUBSTANTIVE
-        done(i, classified(p.result, basis))
 
 
 def counts(rows: list[dict[str, Any]]) -> dict[str, int]:
@@ -213,12 +136,9 @@ __all__ = [
     "IMMEDIATE",
     "SUBSTANTIVE",
     "VACUOUS",
-    "Pending",
     "basis_of",
     "classified",
     "counts",
     "counts_text",
     "decided",
-    "deferred",
-    "resolve",
 ]

@@ -199,7 +199,7 @@ def prove(
     if not tasks:
         return []
     check_encoded(model)
-    from .basis import Pending, deferred, resolve
+    from .basis import decided
     from .family import prove_family, prove_views
     from .live import prove_live
 
@@ -209,7 +209,7 @@ def prove(
     calls: list[tuple[Callable[..., ProofResult], tuple[Any, ...], dict[str, Any]]] = []
     for task in (tasks[k] for k in solved):
         if isinstance(task, FamilySpec):
-            calls.append((deferred, (prove_family, model, task), {"timeout": timeout, "out": out}))
+            calls.append((decided, (prove_family, model, task), {"timeout": timeout, "out": out}))
         elif isinstance(task, LiveSpec):
             calls.append((prove_live, (model, task), {"timeout": timeout, "out": out, "given": tuple(deadlocks)}))
         elif isinstance(task, Spec):
@@ -219,17 +219,12 @@ def prove(
             kwargs = {"timeout": timeout, "out": out, "note": note, "known": known, "given": tuple(given)}
             if corpus:
                 kwargs["corpus"] = corpus_known(paper_part(model), task.key)
-            calls.append((deferred, (prove_spec, paper_part(model), task), kwargs))
+            calls.append((decided, (prove_spec, paper_part(model), task), kwargs))
         else:
             calls.append((prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out}))
     results: list[ProofResult | None] = [None] * len(tasks)
 
-    held: dict[int, Pending] = {}
-
-    def done(k: int, result: ProofResult | Pending) -> None:
-        if isinstance(result, Pending):  # its basis is asked after every obligation: each query once
-            held[k] = result
-            return
+    def done(k: int, result: ProofResult) -> None:
         results[k] = result
         if on_result:
             on_result(result)
@@ -251,7 +246,6 @@ def prove(
         overrun=overrun,
         on_start=lambda k: start(solved[k]),
     )
-    resolve(held, workers, done, run_fresh)
     for k in covers:  # no solver budget: every view is read once (the views' own processes share the cores)
         from .refine import prove_coverage
 
