@@ -239,3 +239,15 @@ def test_a_model_with_corner_legs_is_refused_before_any_work(capsys, tmp_path):
     err = capsys.readouterr().err.strip()
     assert "repair_progress='corner'" in err and len(err.splitlines()) == 1
     assert not (tmp_path / "p").exists()
+
+
+def test_edge_roles_are_the_witnesses_inside_a_forall_only():
+    """A witness inside a ``forall`` vouches for an edge (a bridge: bridged rows, and the coverage asks for
+    them); one outside every ``forall`` is what the leg needs its mover to see, and bridges no edge."""
+    from fatline_verify.rules.family.lang import edge_roles, exists, forall, roles, sees
+
+    ahead = exists(lambda a: a.x > me.x, role="ahead")
+    bridged = forall(lambda c: sees(end, c) | exists(lambda b: sees(b, c), role="bridge"))
+    assert roles(ahead & bridged) == ("ahead", "bridge")
+    assert edge_roles(ahead & bridged) == ("bridge",)
+    assert edge_roles(ahead) == ()

@@ -135,14 +135,15 @@ FAMILY_PARTS = {
 
 
 def _witnesses(model: Model) -> str:
-    """``""`` when the model's family names a witness in a guard (a bridged edge), else why no bridged row is needed."""
+    """``""`` when the model's family names an edge's witness in a guard (a bridge: an ``exists`` inside a
+    ``forall``), else why no bridged row is needed (a witness a leg needs its mover to see bridges no edge)."""
     from ..rules import registry
-    from ..rules.family.lang import roles
+    from ..rules.family.lang import edge_roles
 
     family = registry.family(model)
-    if family is None or any(roles(c.guard) for c in family.classes):
+    if family is None or any(edge_roles(c.guard) for c in family.classes):
         return ""
-    return "no guard of the family names a witness, so every edge is kept"
+    return "no guard of the family names an edge's witness, so every edge is kept"
 
 
 def family_lemma(lemma: Lemma, encoding: str) -> Entry:

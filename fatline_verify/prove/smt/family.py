@@ -62,8 +62,8 @@ from ...rules.family.lang import (
     Num,
     Or,
     Sees,
+    edge_roles,
     roles,
-    walk,
 )
 from ...rules.family.lang import Pt as LPt
 from .cases import Arith, Pt, apart, d2, sees, view_reach
@@ -291,17 +291,6 @@ def specs(family: MoveFamily, lemmas: tuple[Lemma, ...]) -> list[FamilySpec]:
                         for witness in (REST, *names)
                     ]
     return out
-
-
-def edge_roles(c: Cond) -> tuple[str, ...]:
-    """The witness roles of ``c`` that vouch for the robot a ``forall`` binds (an edge's bridge): those whose
-    ``exists`` lies inside a ``forall``. A role outside every ``forall`` is what the leg itself needs its mover
-    to see (named by ``build(..., witnesses=True)``), never an edge's bridge."""
-    out: list[str] = []
-    for sub in walk(c):
-        if isinstance(sub, Forall):
-            out += [r for r in roles(sub.body) if r not in out]
-    return tuple(out)
 
 
 def leg_roles(c: Cond) -> tuple[str, ...]:

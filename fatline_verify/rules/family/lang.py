@@ -420,6 +420,17 @@ def roles(c: Cond) -> tuple[str, ...]:
     return tuple(out)
 
 
+def edge_roles(c: Cond) -> tuple[str, ...]:
+    """The witness roles of ``c`` that vouch for the robot a ``forall`` binds (an edge's bridge): those whose
+    ``exists`` lies inside a ``forall``. A role outside every ``forall`` is what the leg itself needs its mover
+    to see (named by ``build(..., witnesses=True)``), never an edge's bridge."""
+    out: list[str] = []
+    for sub in walk(c):
+        if isinstance(sub, Forall):
+            out += [r for r in roles(sub.body) if r not in out]
+    return tuple(out)
+
+
 __all__ = [
     "FALSE",
     "TRUE",
@@ -432,6 +443,7 @@ __all__ = [
     "clear",
     "clear_of",
     "distinct",
+    "edge_roles",
     "end",
     "exists",
     "forall",
