@@ -119,9 +119,17 @@ def prove_family(
                     if better[0] is Verdict.VIOLATED:
                         verdict, reason, doc, config = better
             if verdict is not Verdict.VIOLATED and _needs_witnesses(family, spec):
-                named = spend.solve(build(arith(), model, family, spec, witnesses=True), spend.left() * WITNESS_SHARE)
+                witnessed = build(arith(), model, family, spec, witnesses=True)
+                named = spend.solve(witnessed, spend.left() * WITNESS_SHARE)
                 if named.status == "unsat":
-                    return result(Verdict.PROVED, proved + WITNESSED)
+                    where = ""
+                    if path:  # the obligation that came out unsat, beside the one without the witnesses (sat)
+                        named_note = f"The robot each mover's leg needs it to see is named.{WITNESS_NOTE}"
+                        witnessed.comment = f"{full.comment}\n{named_note}"
+                        other = Path(path).with_suffix(".witnessed.smt2")
+                        write(witnessed, other)
+                        where = f" ({other.as_posix()})"
+                    return result(Verdict.PROVED, proved + WITNESSED + where)
             if verdict is not Verdict.VIOLATED and not policy:
                 tried = []
                 for extra in range(EXTRA + 1):
@@ -202,6 +210,11 @@ WITNESSED = ", once the robot each mover's leg needs it to see (its guard's witn
 EXTRA = 2
 """Robots at rest added to the named ones when a family without a policy looks for a counterexample its legs
 replay (the named robots and they the whole swarm)."""
+WITNESS_NOTE = (
+    " Each such witness may be any robot its mover sees, one of the named robots or one more (the role is"
+    " their disjunction), so no swarm the guards allow is left out."
+)
+"""What the header of an obligation with its legs' witnesses named adds."""
 WITNESS_SHARE = 0.6
 """The share of what is left of the budget, once an answer is not replayed, for the obligation with each
 mover's leg witnesses named."""
