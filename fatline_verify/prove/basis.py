@@ -66,31 +66,29 @@ def _unsat(built: Any, seconds: float) -> bool:
     return spend.solve(built, spend.left()).status == "unsat"
 
 
-def _builder(model: Model, task: Any) -> Callable[..., Any] | None:
-    """``build(**kw)`` of ``task``'s obligation under ``model`` (the model its obligation was built for),
-    ``None`` for a task without a case (the global form, a liveness obligation)."""
+def basis_of(model: Model, task: Any, result: ProofResult, budget: float = BUDGET) -> str:
+    """The kind of a PROVED ``result`` of ``task`` under ``model`` (the model its obligation was built
+    for); ``""`` for any other verdict or a task without a case (the global form)."""
     from .smt.cases import Arith
     from .smt.claims import Spec
     from .smt.family import FamilySpec
 
+    if result.verdict is not Verdict.PROVED:
+        return ""
     if isinstance(task, Spec):
         from .smt.claims import build as build_spec
 
-        return lambda **kw: build_spec(Arith(None), model, task, **kw)
-    if isinstance(task, FamilySpec):
+        def build(**kw: bool) -> Any:
+            return build_spec(Arith(None), model, task, **kw)
+    elif isinstance(task, FamilySpec):
         from ..rules import registry
         from .smt.family import build as build_family
 
         family = registry.family(model)
-        return lambda **kw: build_family(Arith(None), model, family, task, **kw)
-    return None
 
-
-def basis_of(model: Model, task: Any, result: ProofResult, budget: float = BUDGET) -> str:
-    """The kind of a PROVED ``result`` of ``task`` under ``model`` (the model its obligation was built
-    for); ``""`` for any other verdict or a task without a case (the global form)."""
-    build = _builder(model, task)
-    if result.verdict is not Verdict.PROVED or build is None:
+        def build(**kw: bool) -> Any:
+            return build_family(Arith(None), model, family, task, **kw)
+    else:
         return ""
     if any(word in result.reason for word in FOUND_VACUOUS):
         return VACUOUS
@@ -131,14 +129,4 @@ def counts_text(rows: list[dict[str, Any]]) -> str:
     return ", ".join(f"{n} {k}" for k, n in counts(rows).items() if n)
 
 
-__all__ = [
-    "BASES",
-    "IMMEDIATE",
-    "SUBSTANTIVE",
-    "VACUOUS",
-    "basis_of",
-    "classified",
-    "counts",
-    "counts_text",
-    "decided",
-]
+__all__ = ["BASES", "IMMEDIATE", "SUBSTANTIVE", "VACUOUS", "basis_of", "classified", "counts", "counts_text", "decided"]

@@ -161,25 +161,7 @@ def _connective(f: z3.ExprRef) -> bool:
 def relaxed_atoms(built: Built) -> tuple[list[z3.BoolRef], list[tuple[z3.BoolRef, z3.BoolRef]]]:
     """The obligation (its lattice bounds included) with every comparison that multiplies two
     non-constant terms replaced by a fresh Boolean (the same comparison by the same Boolean; one
-    without unknowns by its value), and the pairs (comparison, Boolean). Made once per obligation
-    object (the relaxation and the linearization both start from it) while its assertions are the same."""
-    key = tuple(a.get_id() for a in (*built.assertions, *built.bounds))
-    known = _RELAXED.get(id(built))
-    if known is not None and known[0] is built and known[1] == key:
-        return list(known[2]), list(known[3])
-    relaxed, atoms = _relax(built)
-    if len(_RELAXED) >= 8:  # the few obligations a process works on at once
-        del _RELAXED[next(iter(_RELAXED))]
-    _RELAXED[id(built)] = (built, key, relaxed, atoms)
-    return list(relaxed), list(atoms)
-
-
-_RELAXED: dict[int, tuple[Built, tuple[int, ...], list[z3.BoolRef], list[tuple[z3.BoolRef, z3.BoolRef]]]] = {}
-""":func:`relaxed_atoms`' latest answers by obligation object (each kept alive while here, so its id is not
-reused by another)."""
-
-
-def _relax(built: Built) -> tuple[list[z3.BoolRef], list[tuple[z3.BoolRef, z3.BoolRef]]]:
+    without unknowns by its value), and the pairs (comparison, Boolean)."""
     ctx = built.ar.ctx
     memo: dict[int, bool] = {}
     done: dict[int, z3.BoolRef] = {}
