@@ -94,7 +94,9 @@ def run(
         if lemma:
             argv += ["--lemma", lemma]
         t0 = time.perf_counter()
-        subprocess.run(argv, check=False, stdout=subprocess.DEVNULL)
+        # run from the temporary directory: ``python -m`` puts the working directory first on the path,
+        # so from a checkout it would import that checkout's package, not the interpreter's own
+        subprocess.run(argv, check=False, stdout=subprocess.DEVNULL, cwd=tmp)
         wall = time.perf_counter() - t0
         rows = json.loads((out / model / "results.json").read_text())["obligations"]
         ran = len(rows) if lemma is None else sum(1 for r in rows if r["lemma"] == lemma)
