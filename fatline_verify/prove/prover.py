@@ -263,15 +263,13 @@ def prove(
     return [r for r in results if r is not None]
 
 
-def _first(task: Task, earlier: Mapping[str, dict[str, Any]] | None) -> tuple[int, float]:
-    """Where ``task`` goes in the queue: the longest first, so that the run does not end on one
-    obligation while the other cores idle. An earlier run's seconds where its row is there; else the
-    liveness obligations first (on the paper's models the two slowest rows, about 40 s each, are
-    enabledness rows), then the rest in task order (a stable sort)."""
+def _first(task: Task, earlier: Mapping[str, dict[str, Any]] | None) -> float:
+    """Where ``task`` goes in the queue: the longest first by an earlier run's seconds (its row under
+    ``--out``), so that a run does not end on one long obligation while the other cores idle; without an
+    earlier row, in task order (a stable sort), which puts the quick rows the corpus decides first."""
     row = (earlier or {}).get(task_key(task))
-    if row is not None and isinstance(row.get("seconds"), int | float):
-        return (0, -float(row["seconds"]))
-    return (1, 0.0 if isinstance(task, LiveSpec) else 1.0)
+    seconds = row.get("seconds") if row is not None else None
+    return -float(seconds) if isinstance(seconds, int | float) else 0.0
 
 
 def hard_limit(timeout: float) -> float:
