@@ -17,9 +17,9 @@ query, never by a list of names.
 
 Each query asks, within :data:`BUDGET` seconds in all: the linear relaxation (an unsat relaxation is
 an unsat query); z3 over the reals for a sliver of the budget (:data:`QUICK`: most queries of the
-shipped models are decided there in a hundredth of a second); the linearization; the coarsest lattice
-(:data:`LATTICE`: a solution there, confirmed over the reals with every named robot fixed at it, makes
-the query sat); then z3 over the reals for what is left. A query that does not answer leaves the
+shipped models are decided there in a hundredth of a second); the coarsest lattice (:data:`LATTICE`: a
+solution there, confirmed over the reals with every named robot fixed at it, makes the query sat); the
+linearization; then z3 over the reals for what is left. A query that does not answer leaves the
 stronger kind unclaimed (a row is called vacuous or immediate only on an unsat answer); a solution
 only ends a query early, so the lattice changes how long a row takes, never its kind. The queries of
 one case are the same text under every lemma that asks them: a run answers each once
@@ -95,23 +95,21 @@ def _ask(build: Callable[[Any], Any], built: Any, seconds: float) -> bool:
     quick = spend.solve(built, seconds * QUICK).status
     if quick != "unknown":
         return quick == "unsat"
+    if _sat_on_lattice(build, built, LATTICE, spend, seconds * LATTICE_SHARE):
+        return False
     linear = spend.ask(Linearization(built).check, seconds / 2).status
     if linear != "unknown":  # unsat; or sat: a solution of the query itself (every comparison exact), no unsat to find
         return linear == "unsat"
-    if _sat_on_lattice(build, built, LATTICE, spend, seconds * LATTICE_SHARE):
-        return False
     return spend.solve(built, spend.left()).status == "unsat"
 
 
 def _sat_on_lattice(build: Callable[[Any], Any], built: Any, q: int, spend: Any, seconds: float) -> bool:
     """Whether the query has a solution on the lattice ``q`` that the reals' query ``built`` confirms:
     every named robot fixed where the lattice put it, the reals' solver finds the rest (a lattice's
-    query is the reals' restricted to multiples of ``1/q``, so this only checks the restriction)."""
-    import z3
-
+    query is the reals' restricted to multiples of ``1/q``, so this only checks the restriction). Both
+    checks are charged to ``spend``, each within ``seconds``."""
     from .smt.cases import Arith
     from .smt.claims import NotEncoded
-    from .smt.solving import rlimit, wall_ms
 
     try:
         lattice = build(Arith(q))
@@ -120,17 +118,12 @@ def _sat_on_lattice(build: Callable[[Any], Any], built: Any, q: int, spend: Any,
     found = spend.solve(lattice, seconds)
     if found.status != "sat":
         return False
-    ctx = built.ar.ctx
     fixed = [
-        coordinate == z3.RealVal(f"{value.numerator}/{value.denominator}", ctx)
+        coordinate == built.ar.num(value)
         for name, (x, y) in built.bodies.items()
         for coordinate, value in zip((x, y), found.positions[name], strict=True)
     ]
-    solver = z3.Solver(ctx=ctx)
-    solver.set("rlimit", rlimit(seconds))
-    solver.set("timeout", wall_ms(seconds))
-    solver.add(*built.assertions, *built.bounds, *fixed)
-    return solver.check() == z3.sat
+    return spend.solve(replace(built, assertions=[*built.assertions, *fixed]), seconds).status == "sat"
 
 
 def basis_of(model: Model, task: Any, result: ProofResult, budget: float = BUDGET, memo: Path | None = None) -> str:
