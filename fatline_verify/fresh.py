@@ -81,7 +81,7 @@ def run_fresh(
     workers: int,
     done: Callable[[int, Any], None],
     *,
-    limit: float | None = None,
+    limit: float | Callable[[int], float | None] | None = None,
     overrun: Callable[[int, float], Any] | None = None,
     on_start: Callable[[int], None] | None = None,
 ) -> None:
@@ -92,7 +92,8 @@ def run_fresh(
 
     ``limit``: wall-clock seconds after which a call's process is killed and ``done(k, overrun(k,
     seconds))`` reports it instead (a solver can ignore its own limits: z3 was seen in one integer
-    check for over half an hour under a budget of 84 s). Without ``overrun`` there is no limit.
+    check for over half an hour under a budget of 84 s); or a function of ``k`` giving each call's
+    (``None``: none). Without ``overrun`` there is no limit.
     ``on_start(k)``: call ``k``'s process has started (for progress: the seconds spent on it so far).
 
     An interrupt (or any error) kills every running worker at once and propagates: nothing waits for
@@ -103,7 +104,12 @@ def run_fresh(
     pending = list(enumerate(calls))[::-1]
     running: dict[Any, tuple[int, Any]] = {}
     started: dict[int, float] = {}
-    guard = limit if overrun is not None else None
+
+    def guard(k: int) -> float | None:
+        if overrun is None:
+            return None
+        return limit(k) if callable(limit) else limit
+
     try:
         while pending or running:
             while pending and len(running) < workers:
@@ -117,16 +123,14 @@ def run_fresh(
                     running[receive] = (k, proc)
                 if on_start is not None:
                     on_start(k)
-            wait = (
-                None
-                if guard is None
-                else max(0.0, min(started[k] + guard for k, _ in running.values()) - time.monotonic())
-            )
+            ends = [started[k] + g for k, _ in running.values() if (g := guard(k)) is not None]
+            wait = max(0.0, min(ends) - time.monotonic()) if ends else None
             ready_now = multiprocessing.connection.wait(list(running), timeout=wait)
-            if guard is not None and overrun is not None:
+            if overrun is not None:
                 for conn, (k, proc) in list(running.items()):
                     elapsed = time.monotonic() - started[k]
-                    if conn not in ready_now and elapsed >= guard:
+                    g = guard(k)
+                    if conn not in ready_now and g is not None and elapsed >= g:
                         running.pop(conn)
                         proc.kill()
                         proc.join(timeout=5)

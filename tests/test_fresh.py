@@ -22,6 +22,14 @@ def test_a_call_past_its_limit_is_stopped_and_reported_and_the_others_finish():
     assert took < 30
 
 
+def test_a_limit_per_call_stops_only_the_calls_that_have_one():
+    """The views' rows have no solver budget and no wall-clock limit; the solvers' calls keep theirs."""
+    got: dict[int, object] = {}
+    calls = [(time.sleep, (3,), {}), (time.sleep, (60,), {})]
+    run_fresh(calls, 2, got.__setitem__, limit=lambda k: None if k == 0 else 1.0, overrun=lambda k, s: ("stopped", k))
+    assert got == {0: None, 1: ("stopped", 1)}
+
+
 def test_without_an_overrun_answer_there_is_no_limit():
     got: dict[int, object] = {}
     run_fresh([(time.sleep, (1.5,), {})], 1, got.__setitem__, limit=0.5)

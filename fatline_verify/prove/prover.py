@@ -17,6 +17,7 @@ header. Each obligation runs in a fresh process (:mod:`fatline_verify.fresh`). T
 
 from __future__ import annotations
 
+import math
 import os
 import tempfile
 import time
@@ -203,9 +204,9 @@ def prove(
     from .basis import decided
     from .family import prove_family, prove_views
     from .live import prove_live
+    from .refine import prove_coverage
 
-    covers = [k for k, task in enumerate(tasks) if isinstance(task, CoverageSpec | ViewsSpec)]
-    solved = sorted((k for k in range(len(tasks)) if k not in covers), key=lambda k: _first(tasks[k], earlier))
+    solved = sorted(range(len(tasks)), key=lambda k: _first(tasks[k], earlier))
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
     memo = tempfile.TemporaryDirectory(prefix="fatline-answers-")  # the run's shared answers (prove.memo)
     calls: list[tuple[Callable[..., ProofResult], tuple[Any, ...], dict[str, Any]]] = []
@@ -222,6 +223,12 @@ def prove(
             if corpus:
                 kwargs["corpus"] = corpus_known(paper_part(model), task.key)
             calls.append((decided, (prove_spec, paper_part(model), task), {**kwargs, "memo": memo.name}))
+        elif isinstance(task, ViewsSpec):  # no solver budget: every view is read once
+            calls.append((prove_views, (model, task), {"sample": task.sample}))
+        elif isinstance(task, CoverageSpec):
+            exhaustive = task.views is None
+            sample = task.views or 0  # one process (a worker's, daemonic, has no children), beside the solvers
+            calls.append((prove_coverage, (model,), {"exhaustive": exhaustive, "sample": sample, "processes": 1}))
         else:
             calls.append((prove_global, (model,), {"slots": slots, "timeout": timeout, "out": out}))
     results: list[ProofResult | None] = [None] * len(tasks)
@@ -245,28 +252,21 @@ def prove(
             calls,
             workers,
             lambda k, result: done(solved[k], result),
-            limit=hard_limit(timeout),
+            limit=lambda k: None if isinstance(tasks[solved[k]], CoverageSpec | ViewsSpec) else hard_limit(timeout),
             overrun=overrun,
             on_start=lambda k: start(solved[k]),
         )
-    for k in covers:  # no solver budget: every view is read once (the views' own processes share the cores)
-        from .refine import prove_coverage
-
-        task = tasks[k]
-        start(k)
-        if isinstance(task, ViewsSpec):
-            done(k, prove_views(model, task, sample=task.sample))
-            continue
-        views = task.views
-        exhaustive = views is None
-        done(k, prove_coverage(model, exhaustive=exhaustive, sample=views or 0, processes=workers))
     return [r for r in results if r is not None]
 
 
 def _first(task: Task, earlier: Mapping[str, dict[str, Any]] | None) -> float:
-    """Where ``task`` goes in the queue: the longest first by an earlier run's seconds (its row under
-    ``--out``), so that a run does not end on one long obligation while the other cores idle; without an
-    earlier row, in task order (a stable sort), which puts the quick rows the corpus decides first."""
+    """Where ``task`` goes in the queue: the views' rows first (each reads every view or a sample of them,
+    without a solver budget: among the longest, and without an earlier row the only ones known to be);
+    then the longest first by an earlier run's seconds (its row under ``--out``), so that a run does not end
+    on one long obligation while the other cores idle; without an earlier row, in task order (a stable
+    sort), which puts the quick rows the corpus decides first."""
+    if isinstance(task, CoverageSpec | ViewsSpec):
+        return -math.inf
     row = (earlier or {}).get(task_key(task))
     seconds = row.get("seconds") if row is not None else None
     return -float(seconds) if isinstance(seconds, int | float) else 0.0
