@@ -252,11 +252,16 @@ def prove(
             calls,
             workers,
             lambda k, result: done(solved[k], result),
-            limit=lambda k: None if isinstance(tasks[solved[k]], CoverageSpec | ViewsSpec) else hard_limit(timeout),
+            limit=lambda k: None if _reads_views(tasks[solved[k]]) else hard_limit(timeout),
             overrun=overrun,
             on_start=lambda k: start(solved[k]),
         )
     return [r for r in results if r is not None]
+
+
+def _reads_views(task: Task) -> bool:
+    """A views' row (the coverage sample, the in-family views): it reads views, without a solver budget."""
+    return isinstance(task, CoverageSpec | ViewsSpec)
 
 
 def _first(task: Task, earlier: Mapping[str, dict[str, Any]] | None) -> float:
@@ -265,7 +270,7 @@ def _first(task: Task, earlier: Mapping[str, dict[str, Any]] | None) -> float:
     then the longest first by an earlier run's seconds (its row under ``--out``), so that a run does not end
     on one long obligation while the other cores idle; without an earlier row, in task order (a stable
     sort), which puts the quick rows the corpus decides first."""
-    if isinstance(task, CoverageSpec | ViewsSpec):
+    if _reads_views(task):
         return -math.inf
     row = (earlier or {}).get(task_key(task))
     seconds = row.get("seconds") if row is not None else None
