@@ -266,3 +266,29 @@ def test_the_longest_obligations_go_first():
     assert again[: len(views)] == [task_key(t) for t in views]
     rest = again[len(views) :]
     assert rest[:2] == [slow, quick] and rest[2:] == [task_key(t) for t in solved if task_key(t) not in earlier]
+
+
+def test_the_in_family_views_are_read_once_per_run(tmp_path, monkeypatch):
+    """Both lemmas' in-family views rows read the same views against the same family: the first row's check
+    is the answer of the second (read from the run's memo, not computed again), and the second goes last in
+    the queue rather than beside the first."""
+    import fatline_verify.prove.family as fam
+    from fatline_verify.prove.prover import ViewsSpec, _first
+
+    model = load_model("repaired")
+    found = fam.ViewsCheck(7, 3, True, 1.5, ((((1, 2), (0, -3)), "right: not clear"),), 1)
+    calls: list[int] = []
+
+    def counted(m, sample=0):
+        calls.append(sample)
+        return found
+
+    monkeypatch.setattr(fam, "check_views", counted)
+    first = fam.prove_views(model, ViewsSpec(Lemma.NO_COLLISION), sample=0, memo=str(tmp_path))
+    second = fam.prove_views(model, ViewsSpec(Lemma.CONNECTIVITY), sample=0, memo=str(tmp_path))
+    assert calls == [0]
+    assert first.verdict is second.verdict is Verdict.VIOLATED
+    assert first.reason == second.reason and first.configuration == second.configuration
+    assert fam.prove_views(model, ViewsSpec(Lemma.CONNECTIVITY), sample=0).reason == first.reason and calls == [0, 0]
+    tasks = [ViewsSpec(Lemma.NO_COLLISION), ViewsSpec(Lemma.CONNECTIVITY)]
+    assert _first(tasks[0], None, []) == float("-inf") and _first(tasks[1], None, tasks[:1]) == float("inf")

@@ -18,8 +18,9 @@
 
 from __future__ import annotations
 
+import json
 import time
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 from fractions import Fraction
 from functools import cache
 from pathlib import Path
@@ -329,13 +330,30 @@ def check_views(model: Model, sample: int = 0) -> ViewsCheck:
     return ViewsCheck(n, moving, not sample, time.perf_counter() - started, tuple(outside), bad)
 
 
-def prove_views(model: Model, spec: ViewsSpec, *, sample: int | None = None) -> ProofResult:
+def shared_views(model: Model, sample: int, memo: Path | None) -> ViewsCheck:
+    """:func:`check_views`, computed once per run (:mod:`fatline_verify.prove.memo`): each lemma's views row
+    reads the same views against the same family (the model's, fixed for one run), so the rows after the
+    first read its answer."""
+    from .memo import key_of, remembered
+
+    def compute() -> str:
+        got = check_views(model, sample)
+        outside = [[[[int(x), int(y)] for x, y in view], why] for view, why in got.outside]
+        return json.dumps({**asdict(got), "outside": outside})
+
+    doc = json.loads(remembered(memo, key_of("views", str(sample)), compute))
+    outside = tuple((tuple((x, y) for x, y in view), why) for view, why in doc.pop("outside"))
+    return ViewsCheck(**doc, outside=outside)
+
+
+def prove_views(model: Model, spec: ViewsSpec, *, sample: int | None = None, memo: str | None = None) -> ProofResult:
     """The row ``spec``: PROVED when every view's decision is in the family (every view read), VIOLATED
-    (with the first view) when one is not, INCONCLUSIVE on a sample that found none."""
+    (with the first view) when one is not, INCONCLUSIVE on a sample that found none. ``memo``: the run's
+    shared answers (the other lemma's views row computes the same check)."""
     total = count_views(model)
     if sample is None:
         sample = 0 if total <= EXHAUSTIVE_VIEWS else SAMPLE_VIEWS
-    got = check_views(model, sample)
+    got = shared_views(model, sample, Path(memo) if memo else None)
     scope = " (every view of the lattice)" if got.exhaustive else f" of {total:,} (a sample)"
     what = f"lattice q={model.parameters.q}: {got.views:,} views{scope}"
     what += f", {got.moving:,} with a move, {got.seconds:.1f} s"

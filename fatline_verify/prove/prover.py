@@ -206,7 +206,7 @@ def prove(
     from .live import prove_live
     from .refine import prove_coverage
 
-    solved = sorted(range(len(tasks)), key=lambda k: _first(tasks[k], earlier))
+    solved = sorted(range(len(tasks)), key=lambda k: _first(tasks[k], earlier, tasks[:k]))
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
     memo = tempfile.TemporaryDirectory(prefix="fatline-answers-")  # the run's shared answers (prove.memo)
     calls: list[tuple[Callable[..., ProofResult], tuple[Any, ...], dict[str, Any]]] = []
@@ -224,7 +224,7 @@ def prove(
                 kwargs["corpus"] = corpus_known(paper_part(model), task.key)
             calls.append((decided, (prove_spec, paper_part(model), task), {**kwargs, "memo": memo.name}))
         elif isinstance(task, ViewsSpec):  # no solver budget: every view is read once
-            calls.append((prove_views, (model, task), {"sample": task.sample}))
+            calls.append((prove_views, (model, task), {"sample": task.sample, "memo": memo.name}))
         elif isinstance(task, CoverageSpec):
             exhaustive = task.views is None
             sample = task.views or 0  # one process (a worker's, daemonic, has no children), beside the solvers
@@ -264,12 +264,16 @@ def _reads_views(task: Task) -> bool:
     return isinstance(task, CoverageSpec | ViewsSpec)
 
 
-def _first(task: Task, earlier: Mapping[str, dict[str, Any]] | None) -> float:
+def _first(task: Task, earlier: Mapping[str, dict[str, Any]] | None, before: Sequence[Task] = ()) -> float:
     """Where ``task`` goes in the queue: the views' rows first (each reads every view or a sample of them,
-    without a solver budget: among the longest, and without an earlier row the only ones known to be);
+    without a solver budget: among the longest, and without an earlier row the only ones known to be),
+    except a lemma's in-family views row after the first of ``before`` (the tasks before it): that one reads
+    the first's answer (:func:`fatline_verify.prove.family.shared_views`), so it goes last, not beside it;
     then the longest first by an earlier run's seconds (its row under ``--out``), so that a run does not end
     on one long obligation while the other cores idle; without an earlier row, in task order (a stable
     sort), which puts the quick rows the corpus decides first."""
+    if isinstance(task, ViewsSpec) and any(isinstance(t, ViewsSpec) for t in before):
+        return math.inf
     if _reads_views(task):
         return -math.inf
     row = (earlier or {}).get(task_key(task))
