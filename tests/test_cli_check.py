@@ -10,6 +10,8 @@ import pytest
 from fatline_verify.cli import main
 from tests.test_cli import assert_one_line_error, run_cli
 
+TABLE_MODEL = Path(__file__).resolve().parents[1] / "bench" / "table-q1-7x7-ssync.toml"
+
 
 def test_check_default_model_writes_replayable_traces_and_json(capsys, tmp_path):
     traces = tmp_path / "traces"
@@ -132,6 +134,14 @@ def test_prove_refuses_a_file_as_out_dir(capsys, tmp_path):
     code, _, err = run_cli(capsys, "prove", "--out", str(f), "-q")
     assert_one_line_error(code, err, "not a directory")
     assert (f / "paper").read_text() == "keep"
+
+
+def test_prove_refuses_a_lemma_the_model_has_no_obligation_for(capsys, tmp_path):
+    """A move family's model proves no-collision and connectivity only: asking it for rma-fixed is refused in one
+    line naming what it has, rather than an empty table and exit 0 (which reads as "everything asked holds")."""
+    code, _, err = run_cli(capsys, "prove", str(TABLE_MODEL), "--lemma", "rma-fixed", "--out", str(tmp_path))
+    assert_one_line_error(code, err, "has no obligation for it; expected one of connectivity, no-collision")
+    assert not any(tmp_path.iterdir())
 
 
 @pytest.mark.slow

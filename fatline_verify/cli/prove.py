@@ -80,6 +80,13 @@ def cmd_prove(args: argparse.Namespace) -> int:
     tasks = tasks_for(
         model, lemmas, two_movers=args.two_movers
     )  # refuses a scheduler the obligations do not encode, before any work
+    if not tasks:  # an empty table reads as "everything asked holds"
+        from ..errors import InvalidInput
+
+        has = sorted({str(t.lemma) for t in tasks_for(model)})
+        raise InvalidInput(
+            f"--lemma {args.lemma}: model {model.name} has no obligation for it; expected one of {', '.join(has)}"
+        )
     if args.coverage != CoverageSpec().views:  # every view, or another sample
         tasks = [CoverageSpec(args.coverage) if isinstance(t, CoverageSpec) else t for t in tasks]
     if args.views is not None:  # a sample of views for the in-family rows
