@@ -292,3 +292,25 @@ def test_the_in_family_views_are_read_once_per_run(tmp_path, monkeypatch):
     assert fam.prove_views(model, ViewsSpec(Lemma.CONNECTIVITY), sample=0).reason == first.reason and calls == [0, 0]
     tasks = [ViewsSpec(Lemma.NO_COLLISION), ViewsSpec(Lemma.CONNECTIVITY)]
     assert _first(tasks[0], None, []) == float("-inf") and _first(tasks[1], None, tasks[:1]) == float("inf")
+
+
+def test_a_vacuity_query_is_answered_by_a_shipped_counterexample_of_its_case():
+    """Scenario 2's up-3-after-down fires, but neither z3 over the reals, the lattice q = 1 nor the
+    linearization shows it within the budget (each spent it whole): the corpus's counterexamples of that
+    case put r there, and with every named robot among their robots z3 finds a solution at once. The
+    configurations of another case do not solve it (r decides otherwise there), so the step is not a
+    formality."""
+    from fatline_verify.prove.corpus import firing
+    from fatline_verify.prove.search import Budget
+    from fatline_verify.prove.smt.cases import Arith
+    from fatline_verify.prove.smt.claims import build
+
+    model = load_model("paper")
+    spec = _spec("paper", SEEN, "scenario-2.up-3-after-down")
+    query = build(Arith(None), model, spec, vacuity=True)
+    known = firing(spec.name, model.name)
+    assert known and all(points[0] == (0, 0) for points in known)
+    assert basis._sat_at_known(query, known, Budget(10), 0.5)
+    others = firing("scenario-1", model.name)
+    assert others and not basis._sat_at_known(query, others, Budget(10), 0.5)
+    assert firing("no-such-case", model.name) == []

@@ -303,3 +303,34 @@ def test_a_deadlock_whose_named_robots_decide_no_declared_case_is_refused(touch,
     path = _trace(touch, TOUCH, "0", tmp_path / "touch.json")
     with pytest.raises(InvalidTrace, match="decides one of rule set 'toy-touch'"):
         read_known(touch, str(path), tasks_for(touch))
+
+
+# --- an enabledness question's solution on a finer lattice ------------------------------------------
+
+
+def test_a_finer_lattice_answers_the_enabledness_question_a_replayed_solution() -> None:
+    """paper, Scenario 4 with I non-empty (r on the left-most vertical, from uncovered-neither): no solution
+    on the model's lattice, one on q = 4 (r stays above a robot at x in [sqrt 3, 2), one below r's height,
+    in C and in I). The step confirms it over the reals with every named robot fixed: z3's answer, and the
+    executable model puts r in that case, staying, on those very points."""
+    from fatline_verify.prove import live
+    from fatline_verify.prove.search import Budget
+    from fatline_verify.prove.smt.cases import Arith
+    from fatline_verify.prove.smt.liveness import build_enabled
+    from fatline_verify.rules.paper.algorithm import decide
+    from fatline_verify.rules.paper.cases import case_of
+
+    model = load_model("paper")
+    spec = LiveSpec(Lemma.PROGRESS, ENABLED, "scenario-4-I-nonempty.from-uncovered-neither")
+    case = live._case(model, spec)
+    full = build_enabled(Arith(None), model, case)
+    got = live._finer_solution(model, case, full, Budget(60), 30.0)
+    assert got is not None and got.status == "sat"
+    points = set(got.positions.values())
+    assert all((4 * c).denominator == 1 for p in points for c in p)
+    assert any((2 * c).denominator != 1 for p in points for c in p)  # not on q = 2: the finer lattice found it
+    origin = (Fraction(0), Fraction(0))
+    assert got.positions["r"] == origin
+    seen = [p for p in points if p != origin and model.sees(p[0] ** 2 + p[1] ** 2)]
+    decision = decide(seen, model)
+    assert not decision.moves and case_of(decision, model).name == spec.case

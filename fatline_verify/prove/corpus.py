@@ -39,9 +39,11 @@ from ..integrity import seal, sealed
 from ..model.config import Model
 from ..model.numbers import Point
 from .replay import Known, Replayed, replay_known
-from .smt.claims import CLOSER, ON_RMA, SEEN, X_NONDECREASING, Spec
+from .smt.claims import CLAIM, CLOSER, ON_RMA, SEEN, X_NONDECREASING, Spec
 
 TRACELESS = (CLOSER, SEEN, ON_RMA, X_NONDECREASING)
+FORMS = frozenset(form for _, form in CLAIM)
+"""Every per-case obligation's form."""
 """The forms whose counterexample is a configuration, not a trace."""
 CORPUS_PATH = Path(__file__).with_name("corpus.json")
 """The shipped corpus (package data)."""
@@ -160,6 +162,22 @@ def known_for(model: Model, key: str, corpus: dict[str, tuple[Entry, ...]] | Non
     own = f"proofs/{model.name}"
     entries = sorted(corpus.get(key, ()), key=lambda e: (own not in e.sources, model.name not in e.models))
     return [(_where(e, own), _document(model, e)) for e in entries]
+
+
+def firing(case: str, model_name: str, corpus: dict[str, tuple[Entry, ...]] | None = None) -> list[tuple[Point, ...]]:
+    """Configurations in which r decides ``case`` (a per-case obligation's name): the initial positions of the
+    corpus's counterexamples of every obligation of that case, in radii, relative to r (r first, at the
+    origin), ``model_name``'s own first. Candidates only: whoever uses one checks it (r's decision there
+    depends on the model's readings)."""
+    corpus = shipped() if corpus is None else corpus
+    heads = {f"{form}-{case}" for form in FORMS}
+    entries = [e for key, es in corpus.items() if key.split("/", 1)[1].split(".and.")[0] in heads for e in es]
+    entries.sort(key=lambda e: model_name not in e.models)
+    out: list[tuple[Point, ...]] = []
+    for entry in entries:
+        (x0, y0), *rest = ((Fraction(x), Fraction(y)) for x, y in entry.initial)
+        out.append(((Fraction(0), Fraction(0)), *((x - x0, y - y0) for x, y in rest)))
+    return out
 
 
 def _where(entry: Entry, own: str) -> str:

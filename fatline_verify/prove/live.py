@@ -24,7 +24,6 @@ enabledness per decision case (r stays), and the rule set's ranking measure per 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import replace
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -191,18 +190,15 @@ def _finer_solution(model: Model, case: LiveCase, full: Any, spend: Budget, seco
     """A solution of the enabledness question ``full`` (over the reals) found on a lattice of :data:`FINER`
     and confirmed over the reals with every named robot fixed there (z3's answer, positions and all), or
     ``None``; every check charged to ``spend``, within ``seconds`` in all."""
+    from .smt.solving import fixed
+
     q = model.parameters.q
     start, confirm = spend.spent, seconds * CONFIRM_SHARE
     for k in FINER:
         found = spend.solve(build_enabled(Arith(k * q), model, case), seconds - confirm - (spend.spent - start))
         if found.status != "sat":
             continue
-        fixed = [
-            coordinate == full.ar.num(value)
-            for name, (x, y) in full.bodies.items()
-            for coordinate, value in zip((x, y), found.positions[name], strict=True)
-        ]
-        confirmed = spend.solve(replace(full, assertions=[*full.assertions, *fixed]), confirm)
+        confirmed = spend.solve(fixed(full, found.positions), confirm)
         if confirmed.status == "sat":
             return confirmed
     return None

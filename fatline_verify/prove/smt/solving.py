@@ -7,7 +7,8 @@ machine's load; the wall clock stops a check at 1.5 times the budget (nlsat does
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from pathlib import Path
 
@@ -164,7 +165,7 @@ def relaxed_atoms(built: Built) -> tuple[list[z3.BoolRef], list[tuple[z3.BoolRef
     without unknowns by its value), and the pairs (comparison, Boolean)."""
     ctx = built.ar.ctx
     memo: dict[int, bool] = {}
-    done: dict[int, z3.BoolRef | None] = {}
+    done: set[int] = set()  # terms walked (their count names each new Boolean)
     atoms: list[tuple[z3.BoolRef, z3.BoolRef]] = []
     pairs: list[tuple[z3.BoolRef, z3.BoolRef]] = []
 
@@ -175,16 +176,13 @@ def relaxed_atoms(built: Built) -> tuple[list[z3.BoolRef], list[tuple[z3.BoolRef
         if _connective(f):
             for c in f.children():
                 walk(c)
-            done[key] = None
         elif _nonlinear(f, memo):
             value = z3.simplify(f)
             if not (z3.is_true(value) or z3.is_false(value)):
                 value = z3.Bool(f"relaxed!{len(done)}", ctx)
                 atoms.append((f, value))
-            done[key] = value
             pairs.append((f, value))
-        else:
-            done[key] = None
+        done.add(key)
 
     formulas = [*built.assertions, *built.bounds]
     for f in formulas:
@@ -192,12 +190,35 @@ def relaxed_atoms(built: Built) -> tuple[list[z3.BoolRef], list[tuple[z3.BoolRef
     # z3 makes the replacements (in one call): rebuilding each connective through the Python API took a quarter
     # longer over the shipped models' 4,100 builds, for the same terms (an atom under a non-connective, which no
     # shipped obligation has, is replaced too: the same Boolean for the same atom, still a relaxation)
-    if not pairs or not formulas:
+    if not pairs:
         return formulas, atoms
     if len(formulas) == 1:
         return [z3.substitute(formulas[0], *pairs)], atoms
     whole = z3.substitute(z3.And(*formulas), *pairs)  # one call: z3 keeps the conjunction's children apart
     return [whole.arg(i) for i in range(len(formulas))], atoms
+
+
+def fixed(built: Built, positions: Positions) -> Built:
+    """``built`` with every named robot fixed at ``positions`` (radii, relative to r): a solution of a
+    restriction of the question (a lattice's) checked against the question itself."""
+    at = [
+        coordinate == built.ar.num(value)
+        for name, (x, y) in built.bodies.items()
+        for coordinate, value in zip((x, y), positions[name], strict=True)
+    ]
+    return replace(built, assertions=[*built.assertions, *at])
+
+
+def among(built: Built, points: Sequence[tuple[Fraction, Fraction]]) -> Built:
+    """``built`` with every named robot but r at one of ``points`` (radii, relative to r; several names may
+    be one robot): the question asked of one known configuration."""
+    num = built.ar.num
+    at = [
+        z3.Or(*[z3.And(x == num(px), y == num(py)) for px, py in points])
+        for name, (x, y) in built.bodies.items()
+        if name != "r"
+    ]
+    return replace(built, assertions=[*built.assertions, *at])
 
 
 def relaxation(built: Built) -> Built:
