@@ -21,10 +21,10 @@ shipped models are decided there in a hundredth of a second); for a vacuity quer
 the shipped counterexamples of r's case (:func:`fatline_verify.prove.corpus.firing`: every named robot at
 one of their robots, z3 choosing which; a solution makes the query sat); the coarsest lattice
 (:data:`LATTICE`: a solution there, confirmed over the reals with every named robot fixed at it, makes
-the query sat); the linearization; then z3 over the reals for what is left. A query that does not answer leaves the
-stronger kind unclaimed (a row is called vacuous or immediate only on an unsat answer); a solution
-only ends a query early, and a lattice without one leaves the steps after it a little less of the budget
-(every shipped model proved afresh with this order: no row's kind changed). The queries of
+the query sat); the linearization; then z3 over the reals for what is left. A query that does not answer
+leaves the stronger kind unclaimed (a row is called vacuous or immediate only on an unsat answer); a
+solution only ends a query early, and a step without one leaves the steps after it a little less of the
+budget (every shipped model proved afresh with this order: no row's kind changed). The queries of
 one case are the same text under every lemma that asks them: a run answers each once
 (:mod:`fatline_verify.prove.memo`).
 """

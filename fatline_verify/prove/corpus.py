@@ -42,9 +42,9 @@ from .replay import Known, Replayed, replay_known
 from .smt.claims import CLAIM, CLOSER, ON_RMA, SEEN, X_NONDECREASING, Spec
 
 TRACELESS = (CLOSER, SEEN, ON_RMA, X_NONDECREASING)
+"""The forms whose counterexample is a configuration, not a trace."""
 FORMS = frozenset(form for _, form in CLAIM)
 """Every per-case obligation's form."""
-"""The forms whose counterexample is a configuration, not a trace."""
 CORPUS_PATH = Path(__file__).with_name("corpus.json")
 """The shipped corpus (package data)."""
 FORMAT = "fatline-prove-corpus"

@@ -4,7 +4,9 @@ enabledness per decision case (r stays), and the rule set's ranking measure per 
 - **enabled**: first the deadlocks given with ``fatline prove --known`` (:mod:`fatline_verify.prove.known`):
   one whose named robot decides the case is a counterexample, however many rounds it took to reach
   (VIOLATED, its trace the row's witness). Then over the reals: ``unsat`` is PROVED for swarms of
-  every size (the header's argument). Otherwise the small swarms (the paper's rules: every initial
+  every size (the header's argument); when z3's first sliver does not answer, a solution is looked for on
+  the finer lattices of :data:`FINER` and confirmed over the reals (it cannot be unsat then), before z3 is
+  given the rest of its share. Otherwise the small swarms (the paper's rules: every initial
   configuration of a few robots, fewest first, by the executable model alone; stuck ones first, then
   deadlocks reached from them: :func:`reach`), then the model's lattice with the
   initial condition's pairs are searched; each solution is replayed by the executable model, and only
@@ -190,12 +192,17 @@ def _finer_solution(model: Model, case: LiveCase, full: Any, spend: Budget, seco
     """A solution of the enabledness question ``full`` (over the reals) found on a lattice of :data:`FINER`
     and confirmed over the reals with every named robot fixed there (z3's answer, positions and all), or
     ``None``; every check charged to ``spend``, within ``seconds`` in all."""
+    from .smt.claims import NotEncoded
     from .smt.solving import fixed
 
     q = model.parameters.q
     start, confirm = spend.spent, seconds * CONFIRM_SHARE
     for k in FINER:
-        found = spend.solve(build_enabled(Arith(k * q), model, case), seconds - confirm - (spend.spent - start))
+        try:
+            lattice = build_enabled(Arith(k * q), model, case)
+        except (ValueError, NotEncoded):  # a constant off this lattice: no solution to look for here
+            continue
+        found = spend.solve(lattice, seconds - confirm - (spend.spent - start))
         if found.status != "sat":
             continue
         confirmed = spend.solve(fixed(full, found.positions), confirm)

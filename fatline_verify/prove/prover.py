@@ -206,7 +206,8 @@ def prove(
     from .live import prove_live
     from .refine import prove_coverage
 
-    solved = sorted(range(len(tasks)), key=lambda k: _first(tasks[k], earlier, tasks[:k]))
+    views = [k for k, task in enumerate(tasks) if isinstance(task, ViewsSpec)]
+    solved = sorted(range(len(tasks)), key=lambda k: _first(tasks[k], earlier, again=k in views[1:]))
     workers = max(1, min(jobs or os.cpu_count() or 1, len(tasks)))
     memo = tempfile.TemporaryDirectory(prefix="fatline-answers-")  # the run's shared answers (prove.memo)
     calls: list[tuple[Callable[..., ProofResult], tuple[Any, ...], dict[str, Any]]] = []
@@ -264,15 +265,15 @@ def _reads_views(task: Task) -> bool:
     return isinstance(task, CoverageSpec | ViewsSpec)
 
 
-def _first(task: Task, earlier: Mapping[str, dict[str, Any]] | None, before: Sequence[Task] = ()) -> float:
+def _first(task: Task, earlier: Mapping[str, dict[str, Any]] | None, *, again: bool = False) -> float:
     """Where ``task`` goes in the queue: the views' rows first (each reads every view or a sample of them,
     without a solver budget: among the longest, and without an earlier row the only ones known to be),
-    except a lemma's in-family views row after the first of ``before`` (the tasks before it): that one reads
-    the first's answer (:func:`fatline_verify.prove.family.shared_views`), so it goes last, not beside it;
+    except an in-family views row ``again`` (another lemma's computes the same check): it reads that one's
+    answer (:func:`fatline_verify.prove.family.shared_views`), so it goes last, not beside it;
     then the longest first by an earlier run's seconds (its row under ``--out``), so that a run does not end
     on one long obligation while the other cores idle; without an earlier row, in task order (a stable
     sort), which puts the quick rows the corpus decides first."""
-    if isinstance(task, ViewsSpec) and any(isinstance(t, ViewsSpec) for t in before):
+    if again:
         return math.inf
     if _reads_views(task):
         return -math.inf
