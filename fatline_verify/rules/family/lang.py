@@ -16,7 +16,8 @@ other), :func:`distinct`. Connectives: ``&``, ``|``, ``~``, :func:`implies`, :fu
 :func:`any_of`.
 
 The **concrete** interpreter (:func:`holds`) evaluates a condition on a snapshot in lattice units with
-exact integers and ``Fraction`` s, as the engines run; the **symbolic** one
+exact integers and ``Fraction`` s, as the engines run (each condition compiled once per model into closures,
+its constants scaled to lattice units: integers on the lattice, no dispatch per evaluation); the **symbolic** one
 (:mod:`fatline_verify.prove.smt.family`) turns it into z3 terms over the robots an obligation names.
 """
 
@@ -332,26 +333,8 @@ class Ground:
         return Ground(self.model, self.seen, {**self.points, var: p})
 
 
-def _point(p: Pt, g: Ground) -> Point:
-    if isinstance(p, XY):
-        return (_exact(_value(p.x, g)), _exact(_value(p.y, g)))
-    base = g.points[p.name]
-    rho = g.model.radius
-    if not p.offset[0] and not p.offset[1]:
-        return base
-    return (_exact(base[0] + p.offset[0] * rho), _exact(base[1] + p.offset[1] * rho))
-
-
 def _exact(v: Number) -> Number:
     return int(v) if isinstance(v, Fraction) and v.denominator == 1 else v
-
-
-def _value(n: Num, g: Ground) -> Number:
-    rho = g.model.radius
-    total: Number = n.const * rho
-    for name, axis, k in n.terms:
-        total += k * g.points[name][axis]
-    return total
 
 
 _OPS: dict[str, Callable[[Any], bool]] = {
@@ -366,29 +349,87 @@ _OPS: dict[str, Callable[[Any], bool]] = {
 
 def holds(c: Cond, g: Ground) -> bool:
     """Whether ``c`` holds on ``g``, exactly (integers and ``Fraction`` s; squared distances)."""
+    return _compiled(c, g.model)(g.seen, dict(g.points))
+
+
+Test = Callable[[Sequence[Point], dict[str, Point]], bool]
+"""A condition compiled for one model: ``test(seen, points)``, ``points`` the named points (a quantifier binds
+its variable there)."""
+
+_COMPILED: dict[tuple[int, int], tuple[Cond, Any, Test]] = {}
+"""Each condition compiled once per model (by ``id``; the condition and the model are kept beside the test, so
+neither ``id`` is reused while the entry lives)."""
+
+
+def _compiled(c: Cond, model: Any) -> Test:
+    got = _COMPILED.get((id(c), id(model)))
+    if got is None:
+        if len(_COMPILED) > 20_000:
+            _COMPILED.clear()
+        got = _COMPILED[(id(c), id(model))] = (c, model, _compile(c, model))
+    return got[2]
+
+
+def _compile(c: Cond, model: Any) -> Test:
+    """The concrete interpreter as closures built once: each node's constants scaled to lattice units (integers
+    where they are integral, so a lattice evaluates in integers), no dispatch on the node per evaluation."""
     match c:
         case Const(value=v):
-            return v
+            return lambda seen, env: v
         case Cmp(op=op, expr=e):
-            return _OPS[op](_value(e, g))
+            value, test = _compile_num(e, model.radius), _OPS[op]
+            return lambda seen, env: test(value(env))
         case Sees(a=a, b=b):
-            return bool(g.model.sees(dist2(_point(a, g), _point(b, g))))
+            pa, pb, sees_ = _compile_pt(a, model.radius), _compile_pt(b, model.radius), model.sees
+            return lambda seen, env: bool(sees_(dist2(pa(env), pb(env))))
         case Clear(a0=a0, a1=a1, b0=b0, b1=b1):
-            d2 = segment_segment_dist2(_point(a0, g), _point(a1, g), _point(b0, g), _point(b1, g))
-            return not touches(d2, g.model)
+            a0_, a1_, b0_, b1_ = (_compile_pt(p, model.radius) for p in (a0, a1, b0, b1))
+            return lambda seen, env: not touches(segment_segment_dist2(a0_(env), a1_(env), b0_(env), b1_(env)), model)
         case Distinct(a=a, b=b):
-            return _point(a, g) != _point(b, g)
+            pa, pb = _compile_pt(a, model.radius), _compile_pt(b, model.radius)
+            return lambda seen, env: pa(env) != pb(env)
         case And(parts=ps):
-            return all(holds(p, g) for p in ps)
+            fs = tuple(_compile(p, model) for p in ps)
+            return lambda seen, env: all(f(seen, env) for f in fs)
         case Or(parts=ps):
-            return any(holds(p, g) for p in ps)
+            fs = tuple(_compile(p, model) for p in ps)
+            return lambda seen, env: any(f(seen, env) for f in fs)
         case Not(part=p):
-            return not holds(p, g)
-        case Forall(var=v, body=b):
-            return all(holds(b, g.bind(v, s)) for s in g.seen)
-        case Exists(var=v, body=b):
-            return any(holds(b, g.bind(v, s)) for s in g.seen)
+            f = _compile(p, model)
+            return lambda seen, env: not f(seen, env)
+        case Forall(var=v, body=b) | Exists(var=v, body=b):
+            f, every = _compile(b, model), isinstance(c, Forall)
+
+            def quantified(seen: Sequence[Point], env: dict[str, Point]) -> bool:
+                for s in seen:  # a variable's name is fresh (one binder each): setting it shadows nothing
+                    env[v] = s
+                    if f(seen, env) is not every:
+                        return not every
+                return every
+
+            return quantified
     raise TypeError(f"{c!r}: not a condition of the guard language")
+
+
+def _compile_num(n: Num, rho: int) -> Callable[[dict[str, Point]], Number]:
+    const = _exact(n.const * rho)
+    terms = tuple((name, axis, _exact(k)) for name, axis, k in n.terms)
+    if len(terms) == 1 and terms[0][2] == 1:
+        ((name, axis, _),) = terms
+        return lambda env: env[name][axis] + const
+    return lambda env: const + sum(k * env[name][axis] for name, axis, k in terms)
+
+
+def _compile_pt(p: Pt, rho: int) -> Callable[[dict[str, Point]], Point]:
+    if isinstance(p, XY):
+        cx, cy = _compile_num(p.cx, rho), _compile_num(p.cy, rho)
+        ox, oy = _exact(p.offset[0] * rho), _exact(p.offset[1] * rho)
+        return lambda env: (cx(env) + ox, cy(env) + oy)
+    name = p.name
+    dx, dy = _exact(p.offset[0] * rho), _exact(p.offset[1] * rho)
+    if not dx and not dy:
+        return lambda env: env[name]
+    return lambda env: (env[name][0] + dx, env[name][1] + dy)
 
 
 def touches(d2: Number, model: Any) -> bool:

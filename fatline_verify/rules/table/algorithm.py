@@ -21,6 +21,7 @@ from ...integrity import sealed
 from ...synth.table import Table, parse_view
 from ..decision import ORIGIN, Decision
 from ..family.family import MoveFamily
+from ..family.narrow import narrowed
 from ..repaired.whatif import legs_family
 
 TABLES = Path(__file__).resolve().parent / "tables"
@@ -67,13 +68,21 @@ def load(path: Path) -> Shipped:
 
 def family(shipped: Shipped) -> Any:
     """The table's move family: the one ``fatline synth`` searched (its leg kinds, on the model's lattice,
-    :func:`fatline_verify.rules.repaired.whatif.legs_family`). Every leg of the table is one the family admits
+    :func:`fatline_verify.rules.repaired.whatif.legs_family`), each class narrowed to the views the table moves
+    by it (:func:`fatline_verify.rules.family.narrow.narrowed`). Every leg of the table is one the family admits
     from its view, and a view the table does not list stays: a table is a policy inside the family, so the
     family's safety obligations are the table's (``fatline prove``), and the checker's ``in-family`` holds
-    each run to it."""
+    each run to it. Narrowed, the obligations speak of the views the table plays only: the wider family's
+    connectivity has configurations the table never plays, which no proof or counterexample decides."""
+    made: dict[tuple[object, ...], MoveFamily] = {}
 
     def of(model: Any) -> MoveFamily:
-        return legs_family(model, shipped.legs)
+        base = legs_family(model, shipped.legs)
+        key = (id(base), model.radius)
+        got = made.get(key)
+        if got is None or got.name != f"{base.name}/{shipped.name}":
+            got = made[key] = narrowed(base, shipped.table.legs, model, shipped.name)
+        return got
 
     return of
 
