@@ -35,7 +35,7 @@ from ..schedulers.round import Collision, decide_all, lost_edges, play_round, sn
 from ..trace.simulate import Outcome, Run, outcome_after
 from ..trace.traces import replayed_document
 from .search import MIN_CHECK, PROVED_REASON, Budget, rounds, rounds_text
-from .smt.family import BRIDGED, FamilySpec, argument, build
+from .smt.family import FamilySpec, argument, build
 from .tasks import VIEWS_FORM, ProofResult, ViewsSpec
 from .views import all_views, count_views, random_views
 
@@ -113,16 +113,18 @@ def replay_family(
     """The named robots of a solution as a swarm, under the rule set's own ``decide``: VIOLATED only if the
     movers make moves of the answer's classes (to the answer's ends or others) and the round the executable
     model plays breaks the claim from an initial configuration."""
-    names = ["r", "o", *(["b"] if spec.form == BRIDGED else [])]
+    names = ["r", "o", *(["b"] if spec.role else [])]
     classes = {"r": spec.mine, "o": spec.other, "b": spec.witness}
     state = tuple(model.to_lattice(positions[n]) for n in names)
     config = tuple(f"{x},{y}" for x, y in (positions[n] for n in names))
     shown = ", ".join(f"{n} at {show_point(positions[n])}" for n in names)
     decisions = decide_all(state, model)
-    movers = [i for i, n in enumerate(names) if classes[n] != REST]
+    movers = [i for i, n in enumerate(names) if classes[n] != REST and (classes[n] or decisions[i].moves)]
     for i, name in enumerate(names):
         d = decisions[i]
         want = classes[name]
+        if not want:  # a witness that rules a class out: its own move is not assumed
+            continue
         if want == REST:
             if d.moves:
                 return (Verdict.INCONCLUSIVE, f"in the replay of {shown}, {name} moves too", None, config)
