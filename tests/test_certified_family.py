@@ -152,8 +152,10 @@ def test_the_obligations_split_on_every_ruled_out_leg():
         assert {(lemma, form, a, b) for a in names for b in names} <= by
     assert {s.role for s in got if s.form == BRIDGED} == {RELAY}
     n = len(names)
-    assert len(got) == 2 * (n + n * (n + 1) // 2 + n * n) + n * (n + 1) * (n + 1) == len(
-        specs(fam, (Lemma.NO_COLLISION, Lemma.CONNECTIVITY))
+    assert (
+        len(got)
+        == 2 * (n + n * (n + 1) // 2 + n * n) + n * (n + 1) * (n + 1)
+        == len(specs(fam, (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)))
     )
     assert {t.lemma for t in tasks_for(MODEL) if isinstance(t, ViewsSpec)} == {Lemma.NO_COLLISION, Lemma.CONNECTIVITY}
 
