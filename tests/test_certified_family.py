@@ -22,9 +22,7 @@ from fatline_verify.rules.decision import Decision
 from fatline_verify.rules.family.enforce import violators
 from fatline_verify.rules.family.lang import Ground, holds
 from fatline_verify.rules.registry import RuleSet, register
-from fatline_verify.schedulers.round import Collision
-from fatline_verify.trace.simulate import Outcome
-from fatline_verify.trace.traces import replay
+from fatline_verify.schedulers.round import Collision, play_round
 
 MODEL = load_model("certified")
 
@@ -176,20 +174,25 @@ def test_rows_the_split_proves(key):
 
 
 def test_two_movers_out_of_view_collide_off_the_lattice():
-    """Golden: certified collides, replayed by its own rules: r contracts up while o, out of its view (just
-    over rad_v away) and left of it, steps down-right; a diagonal step is sqrt(2) radii long at q = 1 and
-    the two close by sqrt(5) radii. Off the model's lattice only (the positions are quarter radii):
-    on the lattice q = 1 every pair of steps from out of view stays two radii apart (tests/test_certified.py)."""
+    """A finding of the family's obligations (the plain leg of up and down-right is satisfiable over the reals):
+    certified collides, played by its own rules: r0 contracts up while r1, out of its view (just over rad_v
+    away) and left of it, steps down-right; a diagonal step is sqrt(2) radii long at q = 1 and the two close
+    by sqrt(5) radii. Off the model's lattice only (quarter radii): on the lattice q = 1 every pair of steps
+    from out of view stays two radii apart (tests/test_certified.py)."""
+    model = MODEL
+    state = ((0, 0), (Fraction(-5, 2), Fraction(13, 4)), (0, Fraction(29, 8)))
+    result = play_round(state, [0, 1], model)
+    assert [d.rule for d in (result.decisions[0], result.decisions[1])] == ["contract-up", "down-right"]
+    assert any(isinstance(v, Collision) and v.robots == (0, 1) for v in result.violations)
+    assert not model.sees((state[1][0]) ** 2 + (state[1][1]) ** 2)  # r0 and r1 do not see each other
+
+
+def test_a_ruled_out_case_never_occurs():
+    """The .by.block_W obligations: r's witness shows o cannot move by W while o does: PROVED."""
     spec = next(
         s
         for s in specs(family(MODEL), (Lemma.NO_COLLISION,))
         if s.key == "no-collision/leg-up.and.down-right.by.block_down_right"
     )
     got = prove_family(MODEL, spec, timeout=20, out=None)
-    assert got.verdict is Verdict.VIOLATED, got.reason
-    assert got.witness is not None
-    again = replay(got.witness, MODEL)
-    assert again.outcome is Outcome.VIOLATION and any(isinstance(v, Collision) for v in again.rounds[-1].violations)
-    r, o = (tuple(Fraction(v) for v in p.split(",")) for p in got.configuration[:2])
-    assert (r[0] - o[0]) ** 2 + (r[1] - o[1]) ** 2 > 16  # they do not see each other
-    assert any(v.denominator != 1 for p in (r, o) for v in p)  # off the lattice q = 1
+    assert got.verdict is Verdict.PROVED, got.reason

@@ -62,6 +62,7 @@ from ...rules.family.lang import (
     Or,
     Sees,
     roles,
+    walk,
 )
 from ...rules.family.lang import Pt as LPt
 from .cases import Arith, Pt, apart, d2, sees
@@ -367,6 +368,8 @@ def build(
             continue
         parts = _move(scene, family, name, cls, tests.get(name), ("o",) if spec.form == BRIDGED and name == "r" else ())
         asserts += parts[:2] if immediate else parts
+        if name == "r" and spec.ruled_out and not immediate:
+            asserts.append(_witnessed(scene, family.get(cls).guard, spec.role))
     if spec.form in (KEPT, BRIDGED):
         asserts.append(sees(ar, model, at["r"], at["o"]))
     bodies = dict(at)
@@ -385,6 +388,27 @@ def _initial(ar: Arith, model: Model, points: list[Pt]) -> list[z3.BoolRef]:
     if len(points) == 2:
         return [*out, edges[0]]
     return [*out, z3.AtLeast(*edges, len(points) - 1)]
+
+
+def _witnessed(scene: Scene, guard: Cond, role: str) -> z3.BoolRef:
+    """The case of a ``.by.ROLE`` obligation: in r's guard, instantiated at o, some existential of ``role`` holds
+    with the witness b (r sees b). Only existentials directly under the guard's ``forall`` over o are read;
+    where another binds a variable their bodies use, nothing is asserted (the weaker case, still sound)."""
+    ar = scene.ar
+    r, o, b = scene.at["r"], scene.at["o"], scene.at["b"]
+    cases: list[z3.BoolRef] = []
+    for top in walk(guard):
+        if not isinstance(top, Forall):
+            continue
+        for sub in walk(top.body):
+            if isinstance(sub, Exists) and sub.role == role:
+                env = {"me": r, "end": scene.ends["r"], top.var: o, sub.var: b}
+                try:
+                    body = assumed(sub.body, scene, "r", env)
+                except KeyError:  # a variable bound elsewhere: no case to assert
+                    return ar.true()
+                cases.append(z3.And(sees(ar, scene.model, r, b), body))
+    return ar.any(cases) if cases else ar.true()
 
 
 def _split_on(family: MoveFamily, role: str, cls: str) -> bool:
