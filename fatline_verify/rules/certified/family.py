@@ -146,6 +146,7 @@ def family_for_q(q: int) -> MoveFamily:
         says="certified's steps: right, one lattice unit diagonally right, along the vertical; each clear of every "
         "robot seen and of every leg r answers for, r's edges kept or carried by one hop",
         rules_out={_block(s[0]): s[0] for s in steps(q)},
+        lattice=True,
         witnesses={
             RELAY: "a robot other than the one whose edge it stands for, within view of r's end",
             **{_block(s[0]): f"a robot both see that the other's {s[0]} leg would violate" for s in steps(q)},
