@@ -50,12 +50,15 @@ def test_the_model_names_the_certified_rule_set_without_a_prover_encoding():
     assert set(rule_set.labels) == set(LABELS)
 
 
-def test_prove_refuses_the_certified_rule_set_in_one_line(capsys, tmp_path):
-    from fatline_verify.cli import main
+def test_prove_takes_the_certified_rule_set_by_its_move_family():
+    """No case encoding of its own (prover=None): fatline prove decides its move family's obligations
+    (tests/test_certified_family.py) and nothing else (no liveness declared, no rma-fixed or approach rows)."""
+    from fatline_verify.prove.smt.family import FamilySpec
+    from fatline_verify.prove.tasks import ViewsSpec, encoding_name, tasks_for
 
-    assert main(["prove", "certified", "--out", str(tmp_path / "p"), "-q"]) == 2
-    err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "certified" in err[0]
+    tasks = tasks_for(MODEL)
+    assert encoding_name(MODEL) == "family"
+    assert tasks and all(isinstance(t, FamilySpec | ViewsSpec) for t in tasks)
 
 
 # --- golden verdicts -----------------------------------------------------------------------------

@@ -157,16 +157,18 @@ def replay_family(
     """The named robots of a solution as a swarm, under the rule set's own ``decide``: VIOLATED only if the
     movers make moves of the answer's classes (to the answer's ends or others) and the round the executable
     model plays breaks the claim from an initial configuration."""
-    names = ["r", "o", *(["b"] if spec.form == BRIDGED else [])]
+    names = ["r", "o", *(["b"] if spec.role else [])]
     classes = {"r": spec.mine, "o": spec.other, "b": spec.witness}
     state = tuple(model.to_lattice(positions[n]) for n in names)
     config = tuple(f"{x},{y}" for x, y in (positions[n] for n in names))
     shown = ", ".join(f"{n} at {show_point(positions[n])}" for n in names)
     decisions = decide_all(state, model)
-    movers = [i for i, n in enumerate(names) if classes[n] != REST]
+    movers = [i for i, n in enumerate(names) if classes[n] != REST and (classes[n] or decisions[i].moves)]
     for i, name in enumerate(names):
         d = decisions[i]
         want = classes[name]
+        if not want:  # a witness that rules a class out: its own move is not assumed
+            continue
         if want == REST:
             if d.moves:
                 return (Verdict.INCONCLUSIVE, f"in the replay of {shown}, {name} moves too", None, config)
@@ -235,9 +237,9 @@ def replay_legs(
     the family admits from its own view): VIOLATED only if the swarm is connected and collision-free, each
     mover's leg is of its class and admitted from its own view there (not held, its shape and guard by the
     concrete interpreter), and the round the executable model plays breaks the obligation's claim."""
-    names = ["r", "o", *(["b"] if spec.form == BRIDGED else [])]
+    names = ["r", "o", *(["b"] if spec.role else [])]
     names += sorted(n for n in positions if n[0] in "we" and n[1] in ".0123456789" and not n.endswith("'"))
-    classes = {"r": spec.mine, "o": spec.other, "b": spec.witness}
+    classes = {"r": spec.mine, "o": spec.other, "b": spec.witness or REST}
     state = tuple(_on_lattice(model, positions[n]) for n in names)
     moves = {
         i: (

@@ -64,6 +64,7 @@ from ...rules.family.lang import (
     Sees,
     edge_roles,
     roles,
+    walk,
 )
 from ...rules.family.lang import Pt as LPt
 from .cases import Arith, Pt, apart, d2, sees, view_reach
@@ -260,7 +261,15 @@ class FamilySpec:
 
     @property
     def other_name(self) -> str:
-        return self.other if not self.role else f"{self.other}.by.{self.role}-{self.witness}"
+        if not self.role:
+            return self.other
+        return f"{self.other}.by.{self.role}" if not self.witness else f"{self.other}.by.{self.role}-{self.witness}"
+
+    @property
+    def ruled_out(self) -> bool:
+        """A ``leg`` or ``kept`` obligation in the case where r's test for o passed only through a witness that
+        rules out o's class (:attr:`~fatline_verify.rules.family.family.MoveFamily.rules_out`)."""
+        return bool(self.role) and self.form != BRIDGED
 
     @property
     def key(self) -> str:
@@ -275,7 +284,10 @@ class FamilySpec:
 def specs(family: MoveFamily, lemmas: tuple[Lemma, ...]) -> list[FamilySpec]:
     """Every obligation of ``family`` for ``lemmas``: unordered pairs where the two robots play the same
     part (``leg``, ``kept``); for ``bridged``, every class of r, every class or rest of o, every witness
-    role of r's guard and every class or rest of the witness."""
+    role of r's guard (but those that rule a class out) and every class or rest of the witness. A role that
+    rules out a class (``rules_out``) adds, for every class of r whose guard names it, the ``leg`` and ``kept``
+    obligations of o moving by that class with the witness named (``.by.ROLE``; the witness's own move is
+    not assumed)."""
     names = [c.name for c in family.classes]
     out: list[FamilySpec] = []
     for lemma in lemmas:
@@ -283,8 +295,15 @@ def specs(family: MoveFamily, lemmas: tuple[Lemma, ...]) -> list[FamilySpec]:
             for i, mine in enumerate(names):
                 if form != BRIDGED:
                     out += [FamilySpec(lemma, form, mine, other) for other in (REST, *names[i:])]
+                    out += [
+                        FamilySpec(lemma, form, mine, family.rules_out[role], role)
+                        for role in roles(family.get(mine).guard)
+                        if role in family.rules_out
+                    ]
                     continue
                 for role in edge_roles(family.get(mine).guard):
+                    if role in family.rules_out:
+                        continue
                     out += [
                         FamilySpec(lemma, form, mine, other, role, witness)
                         for other in (REST, *names)
@@ -392,9 +411,9 @@ def build(
     each guard is read exactly on them (:func:`assumed`'s ``exact``): a stronger question whose answers are
     candidates for a counterexample, never a proof."""
     at = {"r": ar.origin(), "o": ar.point("o")}
-    if spec.form == BRIDGED:
+    if spec.role:
         at["b"] = ar.point("b")
-    classes = {"r": spec.mine, "o": spec.other, "b": spec.witness}
+    classes = {"r": spec.mine, "o": spec.other, "b": spec.witness or REST}
     leg_witnesses: dict[str, dict[tuple[str, str], str]] = {}
     if witnesses:
         for name in list(at):
@@ -414,14 +433,18 @@ def build(
         asserts += [apart(ar, model, at[a], at[b]) for b in names[i + 1 :]]
     if initial:
         asserts += _initial(ar, model, [at[n] for n in names if not n.startswith("w.")])
-    tests: dict[str, dict[tuple[str, str], str | None]] = {}
-    if spec.form == KEPT:
+    tests: dict[str, Witnessed] = {}
+    if spec.ruled_out:  # r's test for o passed only through the witness b; o's test for r: unknown
+        tests = {"r": {(spec.role, "o"): "b"}}
+    elif spec.form == LEG and family.rules_out:
+        tests = {"r": _split(family, spec.other, "o"), "o": _split(family, spec.mine, "r")}
+    elif spec.form == KEPT:
         tests = {
-            "r": {(role, "o"): None for role in _all_roles(family)},
-            "o": {(role, "r"): None for role in _all_roles(family)},
+            "r": {(role, "o"): None for role in _all_roles(family) if _split_on(family, role, spec.other)},
+            "o": {(role, "r"): None for role in _all_roles(family) if _split_on(family, role, spec.mine)},
         }
     elif spec.form == BRIDGED:
-        tests = {"r": {(spec.role, "o"): "b"}}
+        tests = {"r": {(spec.role, "o"): "b", **_split(family, spec.other, "o")}}
     for name, named in leg_witnesses.items():
         tests[name] = {**tests.get(name, {}), **named}
     for name in names:
@@ -431,6 +454,8 @@ def build(
         unkept = ("o",) if spec.form == BRIDGED and name == "r" else ()
         parts = _move(scene, family, name, cls, tests.get(name), unkept, exact=closed is not None)
         asserts += parts[:2] if immediate else parts
+        if name == "r" and spec.ruled_out and not immediate:
+            asserts.append(_witnessed(scene, family.get(cls).guard, spec.role))
     if spec.form in (KEPT, BRIDGED):
         asserts.append(sees(ar, model, at["r"], at["o"]))
     if closed is not None:
@@ -464,6 +489,38 @@ def _initial(ar: Arith, model: Model, points: list[Pt]) -> list[z3.BoolRef]:
     return [*out, z3.AtLeast(*edges, len(points) - 1)]
 
 
+def _witnessed(scene: Scene, guard: Cond, role: str) -> z3.BoolRef:
+    """The case of a ``.by.ROLE`` obligation: in r's guard, instantiated at o, some existential of ``role`` holds
+    with the witness b (r sees b). Only existentials directly under the guard's ``forall`` over o are read;
+    where another binds a variable their bodies use, nothing is asserted (the weaker case, still sound)."""
+    ar = scene.ar
+    r, o, b = scene.at["r"], scene.at["o"], scene.at["b"]
+    cases: list[z3.BoolRef] = []
+    for top in walk(guard):
+        if not isinstance(top, Forall):
+            continue
+        for sub in walk(top.body):
+            if isinstance(sub, Exists) and sub.role == role:
+                env = {"me": r, "end": scene.ends["r"], top.var: o, sub.var: b}
+                try:
+                    body = assumed(sub.body, scene, "r", env)
+                except KeyError:  # a variable bound elsewhere: no case to assert
+                    return ar.true()
+                cases.append(z3.And(sees(ar, scene.model, r, b), body))
+    return ar.any(cases) if cases else ar.true()
+
+
+def _split_on(family: MoveFamily, role: str, cls: str) -> bool:
+    """Whether the existential of ``role`` about a robot moving by ``cls`` (or at rest) is split on: every
+    bridge role, and a role that rules out exactly ``cls``; another that rules a class out is left unknown."""
+    return role not in family.rules_out or family.rules_out[role] == cls
+
+
+def _split(family: MoveFamily, cls: str, u: str) -> dict[tuple[str, str], str | None]:
+    """The roles that rule out ``cls``, false in a test for the robot ``u`` (the case without their witness)."""
+    return {(role, u): None for role, ruled in family.rules_out.items() if ruled == cls}
+
+
 def _all_roles(family: MoveFamily) -> tuple[str, ...]:
     out: list[str] = []
     for c in family.classes:
@@ -491,6 +548,17 @@ def argument(model: Model, family: MoveFamily, spec: FamilySpec, built: Built) -
 
     named = ", ".join(n for n in built.bodies if not n.endswith("'"))
     witness = f"; the witness b of role {spec.role} {robot(spec.witness)}" if spec.role else ""
+    if spec.ruled_out:
+        witness = (
+            f"; r's test for o passed only through the witness b of role {spec.role}, which rules out o's "
+            f"{spec.other} leg (b's own move not assumed)"
+        )
+    split = (
+        " A witness role that rules out a class of o (rules_out) is false in the plain obligation of a pair where o "
+        "moves by that class and named in its .by.ROLE obligation (the two cases), and unknown elsewhere."
+        if family.rules_out
+        else ""
+    )
     classes = "; ".join(f"{c.name}: {c.says or 'see the family'}" for c in family.classes)
     return "\n".join(
         [
@@ -507,7 +575,7 @@ def argument(model: Model, family: MoveFamily, spec: FamilySpec, built: Built) -
             "Why unsat covers swarms of every size: each asserted condition is implied by the family's guards for "
             "the named robots in any swarm; every collision, and every edge with a mover at one end, is an "
             "instance of one obligation (fatline_verify/prove/smt/family.py, the module docstring), so each edge "
-            "before the round is a path of at most two edges after it and the swarm stays connected.",
+            f"before the round is a path of at most two edges after it and the swarm stays connected.{split}",
             f"Rests on: {family.rests_on or 'nothing outside the family'}.",
             "Assumptions: exact real arithmetic; unit discs; one shared snapshot per round.",
         ]

@@ -1,7 +1,9 @@
-"""The certified rule set's registration: its decision function and labels (no prover encoding yet)."""
+"""The certified rule set's registration: its decision function, labels and move family (what ``fatline prove``
+proves no-collision and connectivity from; it has no case encoding of its own)."""
 
 from ..registry import RuleSet, register
 from .algorithm import LABELS, decide
+from .family import family
 
 CERTIFIED = register(
     RuleSet(
@@ -12,6 +14,8 @@ CERTIFIED = register(
         "robots at q = 1 and 3 at q = 2.",
         prover=None,
         labels=dict(LABELS),
+        family=family,
     )
 )
-"""The certified rule set (:mod:`.algorithm`); ``fatline prove`` refuses it until an encoding exists."""
+"""The certified rule set (:mod:`.algorithm`); ``fatline prove`` proves its safety from its move family
+(:mod:`.family`)."""

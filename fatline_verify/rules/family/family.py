@@ -69,6 +69,12 @@ class MoveFamily:
     """Whether the prover decides the family's obligations on the model's lattice (integers, exact: PROVED for
     every swarm size on that lattice) rather than over the reals (every position): for legs whose lengths the
     reals' nonlinear arithmetic does not decide in time (a sqrt(2)-long diagonal)."""
+    rules_out: dict[str, str] = field(default_factory=dict)
+    """``role -> class``: witness roles that speak of the robot ``o`` a guard's ``forall`` is instantiated at
+    and show that o cannot move by ``class`` (a robot whose own guard forbids that leg: one in its path, say).
+    The prover splits on each such existential only where o moves by that class (false, or its witness named:
+    the ``.by.ROLE`` obligations) and takes it as unknown elsewhere (:mod:`fatline_verify.prove.smt.family`).
+    Empty: every role is a bridge, as before."""
 
     def __post_init__(self) -> None:
         if not self.classes:
@@ -80,6 +86,11 @@ class MoveFamily:
             raise ValueError(f"move family {self.name!r}: max_step={self.max_step!r}: expected a positive length")
         if roles(self.at_rest):
             raise ValueError(f"move family {self.name!r}: at_rest names a witness; expected a condition without one")
+        for role, cls in self.rules_out.items():
+            if cls not in names:
+                raise ValueError(
+                    f"move family {self.name!r}: rules_out[{role!r}]={cls!r}: expected the name of one of its classes"
+                )
 
     def get(self, name: str) -> LegClass:
         for c in self.classes:

@@ -1,0 +1,198 @@
+"""The certified rule set's move family (``fatline_verify/rules/certified/family.py``): it admits certified's
+decisions, catches a decision outside it, its obligations split on the witnesses that rule a leg out, and
+the prover's verdicts on it (golden)."""
+
+from __future__ import annotations
+
+import random
+from fractions import Fraction
+
+import pytest
+
+from fatline_verify.lemmas.properties import Lemma, Verdict
+from fatline_verify.model.config import load_model
+from fatline_verify.prove.family import prove_family
+from fatline_verify.prove.smt.family import BRIDGED, KEPT, LEG, FamilySpec, specs
+from fatline_verify.prove.tasks import ViewsSpec, tasks_for
+from fatline_verify.prove.views import random_views
+from fatline_verify.rules import registry
+from fatline_verify.rules.certified.algorithm import allowed, decide, region
+from fatline_verify.rules.certified.family import RELAY, family, family_for_q, steps
+from fatline_verify.rules.decision import Decision
+from fatline_verify.rules.family.enforce import violators
+from fatline_verify.rules.family.lang import Ground, holds
+from fatline_verify.rules.registry import RuleSet, register
+from fatline_verify.schedulers.round import Collision, play_round
+
+MODEL = load_model("certified")
+
+
+def certified(q: int = 1):
+    return MODEL.with_q(q)
+
+
+def test_the_rule_set_declares_its_family_for_each_lattice():
+    assert registry.family(certified(1)) is family_for_q(1)
+    assert registry.family(certified(2)) is family_for_q(2)
+    names = [c.name for c in family_for_q(2).classes]
+    assert names == ["right", "right-1of2", "up-right", "down-right", "down", "down-1of2", "up", "up-1of2"]
+    assert set(family_for_q(1).rules_out.values()) == {c.name for c in family_for_q(1).classes}
+
+
+@pytest.mark.parametrize(("q", "views"), [(1, 1500), (2, 600)])
+def test_the_family_admits_every_decision_on_a_sample_of_views(q, views):
+    """What the in-family lemma and the views row judge: each move certified makes on random views (sparse
+    and crowded) lies in the family. Some views must move, or the test says nothing."""
+    model = certified(q)
+    moving = 0
+    for view in random_views(model, views, q):
+        d = decide(view, model)
+        if d.moves:
+            moving += 1
+            assert family(model).admit(view, d, model) is None, (view, d.rule, d.destination)
+    assert moving > views // 4
+
+
+def _step(dest) -> Decision:
+    return Decision("reckless", dest, ((0, 0), dest), ())  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize(
+    ("view", "dest", "why"),
+    [
+        # through a robot at rest: the path is not clear
+        (((2, 0),), (1, 0), "fails the guard of right"),
+        # a robot left of r 4 radii away may step up-right to (-3, 1), out of view of r's end (1, 0): r's own
+        # test refuses the step too (the robot's region has that leg)
+        (((-4, 0),), (1, 0), "fails the guard of right"),
+        # certified never moves left: no class has that shape
+        (((3, 0),), (-1, 0), "no leg class has the shape"),
+    ],
+)
+def test_a_decision_outside_the_family_is_caught(view, dest, why):
+    model = certified(1)
+    got = family(model).admit(view, _step(dest), model)
+    assert got is not None and why in got, got
+    if dest == (1, 0) and view == ((-4, 0),):
+        c = view[0]
+        left = {c: [e for _, e in region(c, view, model)]}
+        assert not allowed("right", dest, view, model, {}, left)
+
+
+def _reckless(snapshot, model):
+    """Certified's decision, but one radius right whenever nothing is in the way at rest: what certified's
+    regions forbid."""
+    if snapshot and all((x - model.radius) ** 2 + y * y >= 4 * model.radius**2 for x, y in snapshot):
+        return _step((model.radius, 0))
+    return decide(snapshot, model)
+
+
+RECKLESS = register(
+    RuleSet("certified-reckless-test", _reckless, "certified's family, a reckless policy (tests).", family=family)
+)
+
+
+def test_the_in_family_lemma_flags_a_policy_that_leaves_the_family():
+    """A rule set with certified's family whose policy steps right past the regions: the step lemma names
+    the robot (what the checker reports, with its trace)."""
+    from dataclasses import replace
+
+    model = replace(MODEL, rules=RECKLESS.name)
+    # r0 sees only r1, 4 left of it; the reckless step right may lose r1 (it may step up-right to (-3, 1))
+    before, after = ((0, 0), (-4, 0)), ((1, 0), (-4, 0))
+    assert _reckless(((-4, 0),), model).destination == (1, 0)
+    assert violators(before, after, model) == [0]
+    assert violators(before, before, model) == []
+
+
+def test_the_relay_is_weak_it_admits_an_edge_certified_would_not_risk():
+    """The over-approximation of certified's closure over hops (what the family cannot state): any other robot
+    in view of r's end relays every edge, so the same step with a robot up right in view is admitted, although
+    r1 stepping up-right would then be cut off. This is why the connectivity rows through the relay are not
+    PROVED; certified's own test refuses the step."""
+    model = certified(1)
+    view = ((-4, 0), (3, 3))
+    assert family(model).admit(view, _step((1, 0)), model) is None
+    left = {(-4, 0): [e for _, e in region((-4, 0), view, model)]}
+    assert not allowed("right", (1, 0), view, model, {}, left)
+
+
+# --- the symbolic side -------------------------------------------------------------------------------
+
+
+def test_the_concrete_and_the_symbolic_guard_agree_on_random_views():
+    """The certified family's guards read by both interpreters on ground views (every robot named)."""
+    from tests.test_family import _z3_holds
+
+    model = certified(1)
+    fam = family(model)
+    rng = random.Random(7)
+    seen = {True: 0, False: 0}
+    for view in random_views(model, 25, 3):
+        view = view[:5]
+        for cls in rng.sample(fam.classes, 2):
+            dest = next((int(s[2]), int(s[3])) for s in steps(1) if s[0] == cls.name)
+            g = Ground(model, view, {"me": (0, 0), "end": dest})
+            got = holds(cls.guard, g)
+            assert got == _z3_holds(cls.guard, view, dest, model), (view, cls.name)
+            seen[got] += 1
+    assert seen[True] and seen[False], seen
+
+
+def test_the_obligations_split_on_every_ruled_out_leg():
+    """Plain leg and kept obligations for every pair, a .by.block_W obligation for every class of r and
+    each class W of o, bridged only through the relay (the block roles are no bridges), and the views rows."""
+    fam = family_for_q(1)
+    got = [t for t in tasks_for(MODEL) if isinstance(t, FamilySpec)]
+    names = [c.name for c in fam.classes]
+    by = {(s.lemma, s.form, s.mine, s.other) for s in got if s.role and s.form != BRIDGED}
+    for lemma, form in ((Lemma.NO_COLLISION, LEG), (Lemma.CONNECTIVITY, KEPT)):
+        assert {(lemma, form, a, b) for a in names for b in names} <= by
+    assert {s.role for s in got if s.form == BRIDGED} == {RELAY}
+    n = len(names)
+    assert (
+        len(got)
+        == 2 * (n + n * (n + 1) // 2 + n * n) + n * (n + 1) * (n + 1)
+        == len(specs(fam, (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)))
+    )
+    assert {t.lemma for t in tasks_for(MODEL) if isinstance(t, ViewsSpec)} == {Lemma.NO_COLLISION, Lemma.CONNECTIVITY}
+
+
+@pytest.mark.parametrize(
+    "key",
+    [
+        "no-collision/leg-right.and.up-right",  # the witness roles false: r checks o's leg directly
+        "no-collision/leg-right.and.right.by.block_right",  # o's own guard contradicts the witness
+        "no-collision/leg-up.and.up.by.block_up",
+        "connectivity/kept-right.and.down",
+    ],
+)
+def test_rows_the_split_proves(key):
+    spec = next(s for s in specs(family(MODEL), (Lemma.NO_COLLISION, Lemma.CONNECTIVITY)) if s.key == key)
+    got = prove_family(MODEL, spec, timeout=20, out=None)
+    assert got.verdict is Verdict.PROVED and got.any_size, got.reason
+
+
+def test_two_movers_out_of_view_collide_off_the_lattice():
+    """A finding of the family's obligations (the plain leg of up and down-right is satisfiable over the reals):
+    certified collides, played by its own rules: r0 contracts up while r1, out of its view (just over rad_v
+    away) and left of it, steps down-right; a diagonal step is sqrt(2) radii long at q = 1 and the two close
+    by sqrt(5) radii. Off the model's lattice only (quarter radii): on the lattice q = 1 every pair of steps
+    from out of view stays two radii apart (tests/test_certified.py)."""
+    model = MODEL
+    state = ((0, 0), (Fraction(-5, 2), Fraction(13, 4)), (0, Fraction(29, 8)))
+    result = play_round(state, [0, 1], model)
+    assert [d.rule for d in (result.decisions[0], result.decisions[1])] == ["contract-up", "down-right"]
+    assert any(isinstance(v, Collision) and v.robots == (0, 1) for v in result.violations)
+    assert not model.sees((state[1][0]) ** 2 + (state[1][1]) ** 2)  # r0 and r1 do not see each other
+
+
+def test_a_ruled_out_case_never_occurs():
+    """The .by.block_W obligations: r's witness shows o cannot move by W while o does: PROVED."""
+    spec = next(
+        s
+        for s in specs(family(MODEL), (Lemma.NO_COLLISION,))
+        if s.key == "no-collision/leg-up.and.down-right.by.block_down_right"
+    )
+    got = prove_family(MODEL, spec, timeout=20, out=None)
+    assert got.verdict is Verdict.PROVED, got.reason
