@@ -251,3 +251,54 @@ def test_edge_roles_are_the_witnesses_inside_a_forall_only():
     assert roles(ahead & bridged) == ("ahead", "bridge")
     assert edge_roles(ahead & bridged) == ("bridge",)
     assert edge_roles(ahead) == ()
+
+
+# --- a policy held to its family by construction -----------------------------------------------------
+
+_HELD_FAMILY = MoveFamily(
+    "held-test-right",
+    (
+        LegClass(
+            "right",
+            (end.y == me.y) & (end.x > me.x) & (end.x <= me.x + 1),
+            forall(lambda c: clear(c) & sees(end, c)),
+        ),
+    ),
+    max_step=1,
+)
+
+
+def _proposals(snapshot, model):
+    """Left first (no class has that shape), then right (admitted where the way is clear), then a stay."""
+    from fatline_verify.rules.decision import stay, step
+
+    yield step("left", (-model.radius, 0))
+    yield step("right", (model.radius, 0))
+    yield stay("wait")
+
+
+def test_a_held_policy_takes_the_first_proposal_its_family_admits():
+    from fatline_verify.rules.family.held import HELD, held
+
+    model = repaired()
+    decide = held(_proposals, _HELD_FAMILY)
+    rho = model.radius
+    assert decide(((3 * rho, 0),), model).rule == "right"  # left refused, right admitted
+    assert decide(((2 * rho, 0),), model).rule == "wait"  # right meets the robot: the stay
+    only_bad = held(lambda s, m: iter([_proposals(s, m).__next__()]), _HELD_FAMILY)
+    assert only_bad(((3 * rho, 0),), model).rule == HELD  # nothing admitted, nothing proposed after: stays
+
+
+def test_the_views_row_of_a_held_rule_set_is_proved_by_construction_without_reading_a_view():
+    from dataclasses import replace
+
+    from fatline_verify.rules.family.held import held
+    from fatline_verify.rules.registry import RuleSet, register
+
+    rule_set = register(RuleSet("held-test-right", held(_proposals, _HELD_FAMILY), "held (tests)", family=_HELD_FAMILY))
+    model = replace(repaired(), rules=rule_set.name)
+    got = prove_views(model, ViewsSpec(Lemma.CONNECTIVITY))
+    assert got.verdict is Verdict.PROVED and "by construction" in got.reason and got.seconds == 0.0, got.reason
+    loose = register(RuleSet("held-test-loose", held(_proposals, None), "held to nothing (tests)", family=_HELD_FAMILY))
+    got = prove_views(replace(repaired(), rules=loose.name), ViewsSpec(Lemma.CONNECTIVITY), sample=200)
+    assert "by construction" not in got.reason, got.reason  # held to no family: the views are read

@@ -25,6 +25,22 @@ that the condition *implies* for the named robots, in any swarm they are part of
 - ``connectivity/bridged``: r sees o before, r's test for o passed through the witness b of role ``R``,
   and neither r-o nor both r-b and b-o are edges after.
 
+- ``connectivity/answered`` (a family whose guards have a :func:`~fatline_verify.rules.family.lang.chain`),
+  for every class of r and of o, o below r in the family's order (``MoveFamily.order``): r's test for o passed
+  without a witness (o's own test not assumed), and r and o do not see each other after;
+- ``connectivity/chain-first`` and ``chain-link`` (the same families), for every class of r and every class or
+  rest of o (and of b): the chain's first link admits o (from r's end), or its link admits b to o, in r's view,
+  and r and o (b and o) do not see each other after, and it is not an edge before the round with a mover above r
+  in the order;
+- ``connectivity/rules-out-ROLE`` (a role that rules out a class): a robot o moving by that class is the robot a
+  witness b of the role speaks of, in the view of a robot r that sees both. Unsat: no robot moving by a class
+  ever has a witness of a role ruling that class out, so every obligation may take that existential as false
+  about such a robot (the bridged ones do, about o and about their witness b).
+
+An existential is keyed by its role and the named robots its body speaks of (:func:`about`): the robot a
+``forall`` binds (a bridge of the edge to o), or the witness an enclosing existential names (the class of that
+witness a nested role rules out).
+
 **Why unsat covers swarms of every size** (each obligation's header says so): every condition asserted is
 one the real guards imply for the named robots, in any swarm. A collision in a round is between a mover
 and another robot, at rest or moving: some ``leg`` obligation names the two (unseen robots included: a
@@ -34,6 +50,17 @@ through a witness, name that mover r and the witness b: a ``bridged`` obligation
 path of at most two edges after; otherwise each mover's test passed without a witness: the ``kept``
 obligation covers it. So every edge before the round is a path of at most two edges after it, and a
 connected swarm stays connected.
+
+With chains (the closure over robots a rule set reaches another through, any number of links) the conclusion
+is reached by induction. An edge's *level* is the greatest order of a mover at its ends (an edge with no mover
+is kept); every edge of a level above ``L`` is connected after the round, and let r-o be of level ``L``, r a
+mover of order ``L``, o at rest or a mover not above r. If r's test for o passed without a witness: o at rest is
+``kept`` (with ``REST``); o a mover below r is ``answered`` (r's test alone); o a mover of the same order is
+``kept`` (both tests), or else o's test passed through a witness and o is named r below. Through a bridge:
+``bridged`` (a path of two edges after the round). Through a chain: each of its links is an edge after the round
+or an edge before it with a mover above r (``chain-first``, ``chain-link``), so of a level above ``L`` and
+connected after the round by the induction: the chain is a path after it. Levels are finitely many, so every
+edge before the round is connected after it.
 """
 
 from __future__ import annotations
@@ -51,6 +78,7 @@ from ...rules.family.family import REST, MoveFamily
 from ...rules.family.lang import (
     XY,
     And,
+    Chain,
     Clear,
     Cmp,
     Cond,
@@ -62,7 +90,9 @@ from ...rules.family.lang import (
     Num,
     Or,
     Sees,
+    chain_roles,
     edge_roles,
+    free_names,
     roles,
     walk,
 )
@@ -70,9 +100,18 @@ from ...rules.family.lang import Pt as LPt
 from .cases import Arith, Pt, apart, d2, sees, view_reach
 from .claims import Built, capsules_close, segment_close
 
-LEG, KEPT, BRIDGED = "leg", "kept", "bridged"
-FORMS = {Lemma.NO_COLLISION: (LEG,), Lemma.CONNECTIVITY: (KEPT, BRIDGED)}
+LEG, KEPT, BRIDGED, RULES, ANSWERED = "leg", "kept", "bridged", "rules-out", "answered"
+FIRST, LINK = "chain-first", "chain-link"
+FORMS = {Lemma.NO_COLLISION: (LEG,), Lemma.CONNECTIVITY: (KEPT, ANSWERED, BRIDGED, FIRST, LINK, RULES)}
 CLAIM = {
+    (Lemma.CONNECTIVITY, ANSWERED): "r, above o in the family's order, and o, within view before the round, are within "
+    "view after it (r's test for o passed without a witness; o's own test not assumed)",
+    (Lemma.CONNECTIVITY, FIRST): "where r's chain starts at o, r sees o after the round, or o moves and is above r in "
+    "the family's order",
+    (Lemma.CONNECTIVITY, LINK): "where a link of r's chain joins b to o, b sees o after the round, or b-o is an edge "
+    "before it with a mover above r in the family's order",
+    (Lemma.CONNECTIVITY, RULES): "no robot o moving by the class the role rules out has a witness of the role (in the "
+    "view of a robot r that sees both)",
     (Lemma.NO_COLLISION, LEG): "r and the other robot o never come within distance 2 during the round",
     (Lemma.CONNECTIVITY, KEPT): "r and o, within view before the round, are within view after it",
     (Lemma.CONNECTIVITY, BRIDGED): "r-o is an edge after the round, or r-b and b-o are",
@@ -143,6 +182,7 @@ def assumed(
     unkept: tuple[str, ...] = (),
     exact: bool = False,
     forced: list[z3.BoolRef] | None = None,
+    names: Mapping[str, str] | None = None,
 ) -> z3.BoolRef:
     """A z3 term for condition ``c`` of the robot ``mover`` (its ``me`` and ``end`` in ``env``) over the
     named robots of ``scene``: implied by ``c`` (``positive``) or implying it (under a negation); see the
@@ -150,10 +190,19 @@ def assumed(
     ``exact``: the named robots are every robot the mover sees (a ground view): each quantifier becomes the
     conjunction or disjunction of its instances, and the term is equivalent to ``c``, whatever the polarity
     (what the tests compare with the concrete interpreter). ``forced``: where a named witness is substituted,
-    its term is also appended there (a bridged obligation asserts it: the test passed through that witness)."""
+    its term is also appended there (a bridged obligation asserts it: the test passed through that witness).
+    ``names``: the named robot each variable of an enclosing quantifier is instantiated at; an existential is
+    keyed in ``witnessed`` by its role and the robots its body speaks of (:func:`about`)."""
     ar, model = scene.ar, scene.model
+    names = names or {}
 
-    def rec(sub: Cond, pos: bool = positive, env2: dict[str, Pt] = env, b2: tuple[str, ...] = bound) -> z3.BoolRef:
+    def rec(
+        sub: Cond,
+        pos: bool = positive,
+        env2: dict[str, Pt] = env,
+        b2: tuple[str, ...] = bound,
+        n2: Mapping[str, str] = names,
+    ) -> z3.BoolRef:
         return assumed(
             sub,
             scene,
@@ -165,6 +214,7 @@ def assumed(
             unkept=unkept if b2 == bound else (),
             exact=exact,
             forced=forced,
+            names=n2,
         )
 
     others = [u for u in scene.at if u != mover]
@@ -200,18 +250,23 @@ def assumed(
             terms = []
             for u in others:
                 inner = {**env, v: scene.at[u]}
-                term = rec(body, True, inner, (*bound, u))
+                term = rec(body, True, inner, (*bound, u), {**names, v: u})
                 if u in unkept:  # the test for u passed, but not without its witness
                     # every role of the body at u false: exactly "the test fails without its witnesses"
                     bare = {(role, u): None for role in roles(body)}
                     term = z3.And(
                         term,
-                        z3.Not(assumed(body, scene, mover, inner, positive=False, witnessed=bare, bound=(*bound, u))),
-                    )
+                        z3.Not(
+                            assumed(
+                                body, scene, mover, inner, positive=False, witnessed=bare, bound=(*bound, u),
+                                names={**names, v: u},
+                            )
+                        ),
+                    )  # fmt: skip
                 terms.append(z3.Implies(sees(ar, model, me, scene.at[u]), term))
             return ar.all(terms)
         case Exists(var=v, body=body, role=role):
-            key = (role, bound[-1]) if bound else (role, "")
+            key = (role, "+".join(names.get(f, f) for f in about(c)))
             if witnessed is not None and key in witnessed:  # a substitution, whatever the polarity
                 w = witnessed[key]
                 if w is None:
@@ -222,7 +277,10 @@ def assumed(
                 at = [w, *(u for u in others if u != w)] if key[1] == "" and w.startswith("w.") else [w]
                 term = ar.any(
                     [
-                        z3.And(sees(ar, model, me, scene.at[u]), rec(body, positive, {**env, v: scene.at[u]}, bound))
+                        z3.And(
+                            sees(ar, model, me, scene.at[u]),
+                            rec(body, positive, {**env, v: scene.at[u]}, bound, {**names, v: u}),
+                        )
                         for u in at
                     ]
                 )
@@ -232,12 +290,58 @@ def assumed(
             if not positive or exact:
                 return ar.any(
                     [
-                        z3.And(sees(ar, model, me, scene.at[u]), rec(body, False, {**env, v: scene.at[u]}, bound))
+                        z3.And(
+                            sees(ar, model, me, scene.at[u]),
+                            rec(body, False, {**env, v: scene.at[u]}, bound, {**names, v: u}),
+                        )
                         for u in others
                     ]
                 )
             return ar.true()
+        case Chain(x=x, y=y, first=first, link=link, to=to, role=role):
+            key = (role, "+".join(names.get(f, f) for f in about(c)))
+            if witnessed is not None and witnessed.get(key, "") is None:
+                return ar.false()
+            if not exact:  # its links are proved apart (chain-first, chain-link): true, or false under a negation
+                return ar.true() if positive else ar.false()
+            # a ground view: the closure over the named robots, one more link per round
+            seen_ = [u for u in others]
+            step = {
+                (w, u): rec(link, positive, {**env, x: scene.at[w], y: scene.at[u]})
+                for w in seen_
+                for u in seen_
+                if w != u
+            }
+            reach = {u: rec(first, positive, {**env, y: scene.at[u]}) for u in seen_}
+            for _ in seen_[1:]:
+                reach = {u: z3.Or(reach[u], *(z3.And(reach[w], step[(w, u)]) for w in seen_ if w != u)) for u in seen_}
+            target = _pt(to, env, ar)
+            return ar.any(
+                [
+                    z3.And(
+                        sees(ar, model, me, scene.at[u]),
+                        target[0] == scene.at[u][0],
+                        target[1] == scene.at[u][1],
+                        reach[u],
+                    )
+                    for u in others
+                ]
+            )
     raise TypeError(f"{c!r}: not a condition of the guard language")
+
+
+def about(c: Exists | Chain) -> tuple[str, ...]:
+    """The variables an existential's body speaks of, bound outside it (not ``me``, ``end`` or its own witness):
+    the robot a ``forall`` binds (``(c,)`` for a bridge of the edge to c), none for a leg's witness, the robot a
+    named witness stands for in an existential nested in its body."""
+    got = _ABOUT.get(id(c))
+    if got is None or got[0] is not c:
+        own = {c.var} if isinstance(c, Exists) else {c.x, c.y}
+        got = _ABOUT[id(c)] = (c, tuple(n for n in free_names(c) if n not in own | {"me", "end"}))
+    return got[1]
+
+
+_ABOUT: dict[int, tuple[Exists | Chain, tuple[str, ...]]] = {}
 
 
 # --- the obligations --------------------------------------------------------------------------------
@@ -269,11 +373,14 @@ class FamilySpec:
     def ruled_out(self) -> bool:
         """A ``leg`` or ``kept`` obligation in the case where r's test for o passed only through a witness that
         rules out o's class (:attr:`~fatline_verify.rules.family.family.MoveFamily.rules_out`)."""
-        return bool(self.role) and self.form != BRIDGED
+        return bool(self.role) and self.form in (LEG, KEPT)
 
     @property
     def key(self) -> str:
-        """``lemma/form-mine.and.other[.by.role-witness]``: how result rows and files name the obligation."""
+        """``lemma/form-mine.and.other[.by.role-witness]``: how result rows and files name the obligation
+        (``lemma/rules-out-ROLE`` for the role's own obligation)."""
+        if self.form == RULES:
+            return f"{self.lemma}/{self.form}-{self.role}"
         return f"{self.lemma}/{self.form}-{self.mine}.and.{self.other_name}"
 
     @property
@@ -292,7 +399,28 @@ def specs(family: MoveFamily, lemmas: tuple[Lemma, ...]) -> list[FamilySpec]:
     out: list[FamilySpec] = []
     for lemma in lemmas:
         for form in FORMS.get(lemma, ()):
+            if form == RULES:
+                used = {r for c in family.classes for r in roles(c.guard)}
+                out += [
+                    FamilySpec(lemma, RULES, REST, cls, role) for role, cls in family.rules_out.items() if role in used
+                ]
+                continue
             for i, mine in enumerate(names):
+                chains = chain_roles(family.get(mine).guard)
+                if form == ANSWERED:
+                    out += [FamilySpec(lemma, form, mine, other) for other in names] if inducts(family) else []
+                    continue
+                if form == FIRST:
+                    out += [FamilySpec(lemma, form, mine, other, role) for role in chains for other in (REST, *names)]
+                    continue
+                if form == LINK:
+                    out += [
+                        FamilySpec(lemma, form, mine, other, role, before)
+                        for role in chains
+                        for other in (REST, *names)
+                        for before in (REST, *names)
+                    ]
+                    continue
                 if form != BRIDGED:
                     out += [FamilySpec(lemma, form, mine, other) for other in (REST, *names[i:])]
                     out += [
@@ -411,7 +539,7 @@ def build(
     each guard is read exactly on them (:func:`assumed`'s ``exact``): a stronger question whose answers are
     candidates for a counterexample, never a proof."""
     at = {"r": ar.origin(), "o": ar.point("o")}
-    if spec.role:
+    if spec.role and spec.form != FIRST:
         at["b"] = ar.point("b")
     classes = {"r": spec.mine, "o": spec.other, "b": spec.witness or REST}
     leg_witnesses: dict[str, dict[tuple[str, str], str]] = {}
@@ -438,13 +566,18 @@ def build(
         tests = {"r": {(spec.role, "o"): "b"}}
     elif spec.form == LEG and family.rules_out:
         tests = {"r": _split(family, spec.other, "o"), "o": _split(family, spec.mine, "r")}
+    elif spec.form == ANSWERED:
+        tests = {"r": {(role, "o"): None for role in _all_roles(family) if _split_on(family, role, spec.other)}}
     elif spec.form == KEPT:
         tests = {
             "r": {(role, "o"): None for role in _all_roles(family) if _split_on(family, role, spec.other)},
             "o": {(role, "r"): None for role in _all_roles(family) if _split_on(family, role, spec.mine)},
         }
     elif spec.form == BRIDGED:
-        tests = {"r": {(spec.role, "o"): "b", **_split(family, spec.other, "o")}}
+        # the roles that rule out o's class, and b's, false about them (the rules-out obligations: a robot
+        # moving by a class has no witness of a role ruling it out)
+        tests = {"r": {(spec.role, "o"): "b", **_split(family, spec.other, "o"), **_split(family, classes["b"], "b")}}
+
     for name, named in leg_witnesses.items():
         tests[name] = {**tests.get(name, {}), **named}
     for name in names:
@@ -456,14 +589,25 @@ def build(
         asserts += parts[:2] if immediate else parts
         if name == "r" and spec.ruled_out and not immediate:
             asserts.append(_witnessed(scene, family.get(cls).guard, spec.role))
-    if spec.form in (KEPT, BRIDGED):
+    if spec.form in (KEPT, BRIDGED, RULES, ANSWERED, FIRST, LINK):
         asserts.append(sees(ar, model, at["r"], at["o"]))
+    if spec.form in (RULES, LINK):
+        asserts.append(sees(ar, model, at["r"], at["b"]))
+    if inducts(family) and spec.form in (KEPT, ANSWERED) and spec.other != REST:
+        # the induction's cases (module docstring): the edge's mover of the greatest order answers for it
+        r_key, o_key = _key(ar, family, at["r"]), _key(ar, family, at["o"])
+        asserts.append(r_key == o_key if spec.form == KEPT else o_key < r_key)
+    if spec.form in (FIRST, LINK) and not immediate:
+        asserts.append(_linked(scene, family, spec))
+    if spec.form == RULES:
+        asserts.append(sees(ar, model, at["r"], at["b"]))
+        scene.ends["r"] = (ar.var("r.end.x"), ar.var("r.end.y"))  # what r's own end is: anything
     if closed is not None:
         asserts.append(connected(ar, model, list(at.values())))
     bodies = dict(at)
     bodies.update({f"{n}'": _after(scene, n) for n in names})
     if not vacuity:
-        asserts.append(_violation(scene, spec))
+        asserts.append(_violation(scene, spec, family))
     bounds = _box(ar, model, family, [at[n] for n in names if n in ("o", "b")]) if ar.lattice else []
     return Built(ar, asserts, bodies, "o", bounds=bounds)
 
@@ -491,8 +635,9 @@ def _initial(ar: Arith, model: Model, points: list[Pt]) -> list[z3.BoolRef]:
 
 def _witnessed(scene: Scene, guard: Cond, role: str) -> z3.BoolRef:
     """The case of a ``.by.ROLE`` obligation: in r's guard, instantiated at o, some existential of ``role`` holds
-    with the witness b (r sees b). Only existentials directly under the guard's ``forall`` over o are read;
-    where another binds a variable their bodies use, nothing is asserted (the weaker case, still sound)."""
+    with the witness b (r sees b). Only existentials about o (:func:`about`: the ``forall``'s variable alone) are
+    read, not those about a robot a chain or another witness binds; where another binds a variable their bodies
+    use, nothing is asserted (the weaker case, still sound)."""
     ar = scene.ar
     r, o, b = scene.at["r"], scene.at["o"], scene.at["b"]
     cases: list[z3.BoolRef] = []
@@ -500,7 +645,7 @@ def _witnessed(scene: Scene, guard: Cond, role: str) -> z3.BoolRef:
         if not isinstance(top, Forall):
             continue
         for sub in walk(top.body):
-            if isinstance(sub, Exists) and sub.role == role:
+            if isinstance(sub, Exists) and sub.role == role and about(sub) == (top.var,):
                 env = {"me": r, "end": scene.ends["r"], top.var: o, sub.var: b}
                 try:
                     body = assumed(sub.body, scene, "r", env)
@@ -528,13 +673,94 @@ def _all_roles(family: MoveFamily) -> tuple[str, ...]:
     return tuple(out)
 
 
-def _violation(scene: Scene, spec: FamilySpec) -> z3.BoolRef:
+def inducts(family: MoveFamily) -> bool:
+    """Whether the family's connectivity argument inducts over its order (its guards have chains)."""
+    return any(chain_roles(c.guard) for c in family.classes)
+
+
+def _chains(family: MoveFamily, cls: str, role: str) -> list[Chain]:
+    """The chains of ``role`` in the guard of ``cls``; each speaks only of its own two robots, ``me`` and ``end``."""
+    out = [sub for sub in walk(family.get(cls).guard) if isinstance(sub, Chain) and sub.role == role]
+    for ch in out:
+        stray = [n for n in free_names(ch.first) + free_names(ch.link) if n not in (ch.x, ch.y, "me", "end")]
+        if stray:
+            raise ValueError(
+                f"move family {family.name!r}: the chain {role!r} of {cls} speaks of {sorted(set(stray))}; expected "
+                "its links to speak of their two robots, me and end only"
+            )
+    return out
+
+
+def _linked(scene: Scene, family: MoveFamily, spec: FamilySpec) -> z3.BoolRef:
+    """r's chain of ``spec.role`` starts at o (``chain-first``) or links b to o (``chain-link``), in r's view; a
+    role that rules out o's class or b's is false about it (the rules-out obligations)."""
+    at = scene.at
+    splits = {**_split(family, spec.other, "o"), **_split(family, spec.witness or REST, "b")}
+    terms = []
+    for ch in _chains(family, spec.mine, spec.role):
+        env = {"me": at["r"], "end": scene.ends["r"], ch.y: at["o"]}
+        names = {ch.y: "o"}
+        body = ch.first
+        if spec.form == LINK:
+            env[ch.x], names[ch.x], body = at["b"], "b", ch.link
+        terms.append(assumed(body, scene, "r", env, witnessed=splits, names=names))
+    return scene.ar.any(terms)
+
+
+def _key(ar: Arith, family: MoveFamily, p: Pt) -> z3.ArithRef:
+    """A point's place in the family's order (``a x + b y``)."""
+    a, b = family.order or (Fraction(0), Fraction(0))
+    return _scalar(ar, Fraction(a)) * p[0] + _scalar(ar, Fraction(b)) * p[1]
+
+
+def _occurrences(family: MoveFamily, role: str) -> list[Exists]:
+    """Every existential of ``role`` in the family's guards, each speaking of one robot (:func:`about`)."""
+    out: list[Exists] = []
+    for cls in family.classes:
+        for sub in walk(cls.guard):
+            if isinstance(sub, Exists) and sub.role == role and all(sub is not e for e in out):
+                if len(about(sub)) != 1:
+                    raise ValueError(
+                        f"move family {family.name!r}: role {role!r} rules out a class but its condition speaks of "
+                        f"{list(about(sub)) or 'no robot'}; expected exactly one (the robot whose class it rules out)"
+                    )
+                out.append(sub)
+    return out
+
+
+def _ruling(scene: Scene, family: MoveFamily, role: str) -> z3.BoolRef:
+    """Some existential of ``role`` holds in r's view about o (moving by the class it rules out), witness b."""
+    at = scene.at
+    terms = []
+    for sub in _occurrences(family, role):
+        (var,) = about(sub)
+        env = {"me": at["r"], "end": scene.ends["r"], var: at["o"], sub.var: at["b"]}
+        terms.append(assumed(sub.body, scene, "r", env, names={var: "o", sub.var: "b"}))
+    return scene.ar.any(terms)
+
+
+def _violation(scene: Scene, spec: FamilySpec, family: MoveFamily | None = None) -> z3.BoolRef:
     ar, model = scene.ar, scene.model
     if spec.form == LEG:
         return _movers_close(scene, "r", "o")
+    if spec.form == RULES:
+        assert family is not None
+        return _ruling(scene, family, spec.role)
+    if spec.form in (FIRST, LINK):
+        assert family is not None
+        r_key = _key(ar, family, scene.at["r"])
+        a = "r" if spec.form == FIRST else "b"
+
+        def above(name: str) -> z3.BoolRef:
+            return _key(ar, family, scene.at[name]) > r_key if name in scene.ends and name != "r" else ar.false()
+
+        inductive = z3.Or(above(a), above("o")) if a != "r" else above("o")
+        if a != "r":
+            inductive = z3.And(sees(ar, model, scene.at[a], scene.at["o"]), inductive)
+        return z3.Not(z3.Or(sees(ar, model, _after(scene, a), _after(scene, "o")), inductive))
     r, o = _after(scene, "r"), _after(scene, "o")
     lost = z3.Not(sees(ar, model, r, o))
-    if spec.form == KEPT:
+    if spec.form in (KEPT, ANSWERED):
         return lost
     b = _after(scene, "b")
     return z3.And(lost, z3.Not(z3.And(sees(ar, model, r, b), sees(ar, model, b, o))))
@@ -575,20 +801,53 @@ def argument(model: Model, family: MoveFamily, spec: FamilySpec, built: Built) -
             "Why unsat covers swarms of every size: each asserted condition is implied by the family's guards for "
             "the named robots in any swarm; every collision, and every edge with a mover at one end, is an "
             "instance of one obligation (fatline_verify/prove/smt/family.py, the module docstring), so each edge "
-            f"before the round is a path of at most two edges after it and the swarm stays connected.{split}",
+            f"before the round is {_conclusion(family)} and the swarm stays connected.{split}{_why(spec)}",
             f"Rests on: {family.rests_on or 'nothing outside the family'}.",
             "Assumptions: exact real arithmetic; unit discs; one shared snapshot per round.",
         ]
     )
 
 
+def _conclusion(family: MoveFamily) -> str:
+    if not inducts(family):
+        return "a path of at most two edges after it"
+    a, b = family.order or (0, 0)
+    return (
+        f"connected after it, by induction over the order {a} x + {b} y of the edges' movers, from the greatest "
+        "down (module docstring): the mover of the greatest order at an edge's ends answers for it (answered, "
+        "kept), bridges it by a path of two edges after the round (bridged), or reaches the other end by a chain "
+        "each of whose links is an edge after the round or one with a mover above it (chain-first, chain-link)"
+    )
+
+
+def _why(spec: FamilySpec) -> str:
+    if spec.form == RULES:
+        return (
+            f" This obligation: a robot o moving by {spec.other} is never the robot a witness of {spec.role} speaks of "
+            f"(in any robot's view); so every obligation may take {spec.role} as false about a robot moving by "
+            f"{spec.other} (the bridged and chain ones do, about o and b)."
+        )
+    if spec.form == FIRST:
+        return " This obligation: the first link of r's chain, from r's end to o."
+    if spec.form == LINK:
+        return " This obligation: a link of r's chain, from b to o (any robots r sees, anywhere in a chain)."
+    if spec.form == ANSWERED:
+        return " This obligation: o is below r in the order, so r's test alone answers for the edge."
+    return ""
+
+
 __all__ = [
+    "ANSWERED",
     "BRIDGED",
+    "FIRST",
     "FORMS",
     "KEPT",
     "LEG",
+    "LINK",
+    "RULES",
     "FamilySpec",
     "Scene",
+    "about",
     "argument",
     "assumed",
     "build",

@@ -79,7 +79,7 @@ Under ASYNC it collides (2 robots, 8 events: a stale snapshot of a contracting v
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from fractions import Fraction
 
 from ...model.config import Model
@@ -115,6 +115,7 @@ LABELS = {
     "contract-down": f"down toward the robot below on its vertical, to {DOWN_GAP} radii",
     "contract-up": f"up under the robot above on its vertical, to {UP_GAP} radii (it sees only its vertical)",
     "make-room": "one lattice unit down, out of the way of a robot left of it",
+    "held": "every move the rules allow leaves its move family: stays",
 }
 """The rule labels :func:`decide` returns, read aloud."""
 
@@ -265,10 +266,12 @@ def candidates(snapshot: Sequence[Point], model: Model) -> list[tuple[str, str, 
     return tries
 
 
-def decide(snapshot: Sequence[Point], model: Model) -> Decision:
-    """The certified rules for the robot at the origin that sees ``snapshot`` (relative, lattice units)."""
+def propose(snapshot: Sequence[Point], model: Model) -> Iterator[Decision]:
+    """Every move the certified rules allow the robot at the origin that sees ``snapshot`` (relative, lattice
+    units), in the order tried, then the stay they give when no move is taken."""
     if not snapshot:
-        return _stay("alone")
+        yield _stay("alone")
+        return
     regions = {c: region(c, snapshot, model) for c in snapshot if c[0] < 0}
     left = {c: [e for _, e in reg] for c, reg in regions.items() if reg}
     mates = {c: region(c, snapshot, model) for c in snapshot if c[0] == 0}
@@ -278,8 +281,26 @@ def decide(snapshot: Sequence[Point], model: Model) -> Decision:
         if rule == "make-room" and any(k == DN for reg in regions.values() for k, _ in reg):
             continue  # a robot on the left that may fall itself: making room too could follow it down
         if allowed(kind, u, snapshot, model, mates, left):
-            return Decision(rule, u, (ORIGIN, u), ())  # type: ignore[arg-type]
-    return _stay("lock" if left else "blocked")
+            yield Decision(rule, u, (ORIGIN, u), ())  # type: ignore[arg-type]
+    yield _stay("lock" if left else "blocked")
 
 
-__all__ = ["DOWN_GAP", "KINDS", "LABELS", "RANK", "UP_GAP", "allowed", "blocks", "candidates", "decide", "region"]
+def decide(snapshot: Sequence[Point], model: Model) -> Decision:
+    """The certified rules for the robot at the origin that sees ``snapshot``: the first move they allow (the
+    rule set runs :func:`.family.decide`, which also holds each to the move family)."""
+    return next(iter(propose(snapshot, model)))
+
+
+__all__ = [
+    "DOWN_GAP",
+    "KINDS",
+    "LABELS",
+    "RANK",
+    "UP_GAP",
+    "allowed",
+    "blocks",
+    "candidates",
+    "decide",
+    "propose",
+    "region",
+]

@@ -43,11 +43,14 @@ from functools import cache
 from typing import Any
 
 from ..family.family import LegClass, MoveFamily
+from ..family.held import held
 from ..family.lang import (
+    FALSE,
     Cond,
     Pt,
     all_of,
     any_of,
+    chain,
     clear,
     clear_of,
     distinct,
@@ -58,10 +61,10 @@ from ..family.lang import (
     me,
     sees,
 )
-from .algorithm import DN, DR, RANK, UP, UP_GAP, UR, R
+from .algorithm import DN, DR, RANK, UP, UP_GAP, UR, R, propose
 
-RELAY = "relay"
-"""The witness role of the first robot of a chain through which r's end reaches another."""
+CHAIN = "chain"
+"""The role of the chains of robots through which r's end reaches another."""
 
 
 def _name(kind: str, s: int, q: int) -> str:
@@ -109,9 +112,27 @@ def _checked(kind: str, c: Pt, theirs: str) -> Cond:
     return (c.x < me.x) | ((c.x == me.x) & _higher(kind, c, theirs))
 
 
-def _relay(c: Pt) -> Cond:
-    """Some other robot in view of r's end: the first link of every chain certified reaches c through."""
-    return exists(lambda b: distinct(b, c) & sees(end, b), role=RELAY)
+def _places(c: Pt, q: int) -> list[tuple[Pt, Cond]]:
+    """Where c may be after the round as r's chains count it, each with the condition under which it is left out:
+    at rest (never), and the end of each of its legs, left out when r can tell c's own guard forbids that leg or
+    c is right of r (it is then taken at rest: where it moves, its edges have a mover right of r, which the
+    induction over x answers for)."""
+    return [(c, FALSE)] + [(c.moved(s[2], s[3]), ruled_out(c, s) | (c.x > me.x)) for s in steps(q)]
+
+
+def _sure(p: Pt, b: Pt, q: int) -> Cond:
+    """``p`` sees every place of ``b``."""
+    return all_of(*(no | sees(p, place) for place, no in _places(b, q)))
+
+
+def _chain(c: Pt, q: int) -> Cond:
+    """c reached from r's end through robots r sees, each link every place of one seeing every place of the next
+    (certified's closure, :func:`.algorithm.allowed`)."""
+
+    def link(a: Pt, b: Pt) -> Cond:
+        return distinct(a, b) & all_of(*(no | _sure(place, b, q) for place, no in _places(a, q)))
+
+    return chain(lambda b: _sure(end, b, q), link, to=c, role=CHAIN)
 
 
 def _guard(q: int, kind: str) -> Cond:
@@ -123,7 +144,7 @@ def _guard(q: int, kind: str) -> Cond:
             ok = ruled_out(c, s) | (clear_of(me, end, c, to) & sees(end, to))
             parts.append(implies(_checked(kind, c, s[1]), ruled_out(c, s) | clear_of(me, end, c, to)))
             kept.append(implies(_checked(kind, c, s[1]), ok))
-        return all_of(*parts, all_of(*kept) | _relay(c))
+        return all_of(*parts, all_of(*kept) | _chain(c, q))
 
     return forall(each)
 
@@ -146,9 +167,10 @@ def family_for_q(q: int) -> MoveFamily:
         says="certified's steps: right, one lattice unit diagonally right, along the vertical; each clear of every "
         "robot seen and of every leg r answers for, r's edges kept or carried by one hop",
         rules_out={_block(s[0]): s[0] for s in steps(q)},
+        order=(Fraction(1), Fraction(0)),
         lattice=True,
         witnesses={
-            RELAY: "a robot other than the one whose edge it stands for, within view of r's end",
+            CHAIN: "the robots through which r's end reaches the robot whose edge it carries",
             **{_block(s[0]): f"a robot both see that the other's {s[0]} leg would violate" for s in steps(q)},
         },
     )
@@ -159,4 +181,11 @@ def family(model: Any) -> MoveFamily:
     return family_for_q(model.parameters.q)
 
 
-__all__ = ["RELAY", "family", "family_for_q", "ruled_out", "steps"]
+decide = held(propose, family)
+"""The certified rules held to the family (:class:`~fatline_verify.rules.family.held.Held`): the first move the
+rules allow that the family admits. The rules' closure over hops reaches a little further than the family's
+chains (a robot that sees no robot r sees keeps its edge to r, so it never ends out of r's view: the region's
+last exclusion, which the guard language does not state), and those moves are not made."""
+
+
+__all__ = ["CHAIN", "decide", "family", "family_for_q", "ruled_out", "steps"]

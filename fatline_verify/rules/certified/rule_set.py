@@ -2,8 +2,8 @@
 proves no-collision and connectivity from; it has no case encoding of its own)."""
 
 from ..registry import RuleSet, register
-from .algorithm import LABELS, decide
-from .family import family
+from .algorithm import LABELS
+from .family import decide, family
 
 CERTIFIED = register(
     RuleSet(

@@ -2,12 +2,14 @@
 a concrete interpreter (the engines) and a symbolic one (the prover)."""
 
 from .family import REST, FamilyOf, LegClass, MoveFamily, family_of
+from .held import HELD, Held, held
 from .lang import (
     FALSE,
     TRUE,
     Cond,
     all_of,
     any_of,
+    chain,
     clear,
     clear_of,
     distinct,
@@ -21,14 +23,17 @@ from .lang import (
 
 __all__ = [
     "FALSE",
+    "HELD",
     "REST",
     "TRUE",
     "Cond",
     "FamilyOf",
+    "Held",
     "LegClass",
     "MoveFamily",
     "all_of",
     "any_of",
+    "chain",
     "clear",
     "clear_of",
     "distinct",
@@ -36,6 +41,7 @@ __all__ = [
     "exists",
     "family_of",
     "forall",
+    "held",
     "implies",
     "me",
     "sees",

@@ -26,7 +26,7 @@ from typing import Any
 
 from ...model.geometry import dist2
 from ...model.numbers import Point
-from .lang import FALSE, Cond, Ground, holds, roles
+from .lang import FALSE, Cond, Ground, chain_roles, holds, roles
 
 REST = "rest"
 """The class name of a robot that does not move."""
@@ -75,6 +75,10 @@ class MoveFamily:
     The prover splits on each such existential only where o moves by that class (false, or its witness named:
     the ``.by.ROLE`` obligations) and takes it as unknown elsewhere (:mod:`fatline_verify.prove.smt.family`).
     Empty: every role is a bridge, as before."""
+    order: tuple[Fraction, Fraction] | None = None
+    """``(a, b)``: an order ``a x + b y`` (radii) of the robots, needed by a family whose guards have a
+    :func:`~.lang.chain`: the prover's connectivity argument inducts over it (an edge with a mover above r is
+    answered by the induction; :mod:`fatline_verify.prove.smt.family`)."""
 
     def __post_init__(self) -> None:
         if not self.classes:
@@ -86,6 +90,12 @@ class MoveFamily:
             raise ValueError(f"move family {self.name!r}: max_step={self.max_step!r}: expected a positive length")
         if roles(self.at_rest):
             raise ValueError(f"move family {self.name!r}: at_rest names a witness; expected a condition without one")
+        chains = sorted({r for c in self.classes for r in chain_roles(c.guard)})
+        if chains and (self.order is None or not any(Fraction(k) for k in self.order)):
+            raise ValueError(
+                f"move family {self.name!r}: its guards have chains {chains} but no order; expected order=(a, b), "
+                "not both 0 (the induction of the connectivity argument)"
+            )
         for role, cls in self.rules_out.items():
             if cls not in names:
                 raise ValueError(

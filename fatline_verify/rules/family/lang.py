@@ -29,7 +29,7 @@ from fractions import Fraction
 from itertools import count
 from typing import Any
 
-from ...model.geometry import dist2, segment_segment_dist2
+from ...model.geometry import dist2, point_segment_dist2, segment_segment_dist2
 from ...model.numbers import Number, Point
 
 Radii = int | Fraction
@@ -263,6 +263,20 @@ class Exists(Cond):
     role: str
 
 
+@dataclass(frozen=True, eq=False)
+class Chain(Cond):
+    """The point :attr:`to` (a robot seen) is reached from the deciding robot through robots it sees: a first one
+    meeting :attr:`first` (bound to :attr:`y`), then each next one meeting :attr:`link` with the one before it
+    (bound to :attr:`x` and :attr:`y`). :attr:`role` names it; the prover proves each link, not the chain."""
+
+    x: str
+    y: str
+    first: Cond
+    link: Cond
+    to: Pt
+    role: str
+
+
 _fresh = count()
 
 
@@ -283,6 +297,19 @@ def exists(fn: Callable[[Pt], Cond], *, role: str) -> Cond:
         raise ValueError(f"role={role!r}: expected a name (an identifier) for the witness")
     var, body = _bind(fn, role)
     return Exists(var, body, role)
+
+
+def chain(first: Callable[[Pt], Cond], link: Callable[[Pt, Pt], Cond], *, to: Pt, role: str) -> Cond:
+    """``chain(lambda y: ..., lambda x, y: ..., to=c, role="chain")``: ``c`` is reached through robots the deciding
+    robot sees, the first meeting ``first(y)``, each next ``y`` meeting ``link(x, y)`` with the one ``x`` before
+    it (the closure: any number of links). The prover proves that each link the conditions admit is an edge
+    after the round, or one of a mover above the deciding robot in the family's order (``MoveFamily.order``),
+    so the chain is a path after the round (``connectivity/chain-first``, ``chain-link``)."""
+    if not role or not role.isidentifier():
+        raise ValueError(f"role={role!r}: expected a name (an identifier) for the chain")
+    n = next(_fresh)
+    x, y = f"{role}_x{n}", f"{role}_y{n}"
+    return Chain(x, y, _cond(first(Pt(y))), _cond(link(Pt(x), Pt(y))), to, role)
 
 
 def sees(a: Pt, b: Pt) -> Cond:
@@ -349,7 +376,15 @@ _OPS: dict[str, Callable[[Any], bool]] = {
 
 def holds(c: Cond, g: Ground) -> bool:
     """Whether ``c`` holds on ``g``, exactly (integers and ``Fraction`` s; squared distances)."""
-    return _compiled(c, g.model)(g.seen, dict(g.points))
+    env: dict[str, Any] = dict(g.points)
+    env[_MEMO] = {}
+    return _compiled(c, g.model)(g.seen, env)
+
+
+_MEMO = " memo"
+"""The key of an evaluation's memo in its points (no variable has a space in its name): each quantifier's and
+swept-disc test's value by the values of the points it speaks of, computed once per evaluation (a guard asks
+the same sub-condition of the same robot many times: a chain's links, each leg a robot might make)."""
 
 
 Test = Callable[[Sequence[Point], dict[str, Point]], bool]
@@ -372,7 +407,66 @@ def _compiled(c: Cond, model: Any) -> Test:
 
 def _compile(c: Cond, model: Any) -> Test:
     """The concrete interpreter as closures built once: each node's constants scaled to lattice units (integers
-    where they are integral, so a lattice evaluates in integers), no dispatch on the node per evaluation."""
+    where they are integral, so a lattice evaluates in integers), no dispatch on the node per evaluation; a
+    quantifier's or swept-disc test's value memoised per evaluation by the points it speaks of."""
+    test = _compile_node(c, model)
+    if not isinstance(c, Forall | Exists | Chain | Clear):
+        return test
+    free = tuple(free_names(c))
+    slot = object()
+
+    def memo(seen: Sequence[Point], env: dict[str, Any]) -> bool:
+        key = (slot, *(env[v] for v in free))
+        cache = env[_MEMO]
+        got = cache.get(key)
+        if got is None:
+            got = cache[key] = test(seen, env)
+        return got  # type: ignore[no-any-return]
+
+    return memo
+
+
+def free_names(c: Cond) -> list[str]:
+    """The names of the points ``c`` speaks of that it does not bind (``me``, ``end``, enclosing variables)."""
+    out: list[str] = []
+    _free(c, frozenset(), out)
+    return out
+
+
+def _free(c: Cond, bound: frozenset[str], out: list[str]) -> None:
+    def num(n: Num) -> None:
+        out.extend(name for name, _, _ in n.terms if name not in bound and name not in out)
+
+    def pt(p: Pt) -> None:
+        if isinstance(p, XY):
+            num(p.cx)
+            num(p.cy)
+        elif p.name and p.name not in bound and p.name not in out:
+            out.append(p.name)
+
+    match c:
+        case Cmp(expr=e):
+            num(e)
+        case Sees(a=a, b=b) | Distinct(a=a, b=b):
+            pt(a)
+            pt(b)
+        case Clear(a0=a0, a1=a1, b0=b0, b1=b1):
+            for p in (a0, a1, b0, b1):
+                pt(p)
+        case And(parts=ps) | Or(parts=ps):
+            for p in ps:
+                _free(p, bound, out)
+        case Not(part=p):
+            _free(p, bound, out)
+        case Forall(var=v, body=b) | Exists(var=v, body=b):
+            _free(b, bound | {v}, out)
+        case Chain(x=x, y=y, first=first, link=link, to=to):
+            pt(to)
+            _free(first, bound | {y}, out)
+            _free(link, bound | {x, y}, out)
+
+
+def _compile_node(c: Cond, model: Any) -> Test:
     match c:
         case Const(value=v):
             return lambda seen, env: v
@@ -384,6 +478,10 @@ def _compile(c: Cond, model: Any) -> Test:
             return lambda seen, env: bool(sees_(dist2(pa(env), pb(env))))
         case Clear(a0=a0, a1=a1, b0=b0, b1=b1):
             a0_, a1_, b0_, b1_ = (_compile_pt(p, model.radius) for p in (a0, a1, b0, b1))
+            if b0 is b1:  # a disc at rest against a swept one
+                return lambda seen, env: not touches(point_segment_dist2(b0_(env), a0_(env), a1_(env)), model)
+            if a0 is a1:
+                return lambda seen, env: not touches(point_segment_dist2(a0_(env), b0_(env), b1_(env)), model)
             return lambda seen, env: not touches(segment_segment_dist2(a0_(env), a1_(env), b0_(env), b1_(env)), model)
         case Distinct(a=a, b=b):
             pa, pb = _compile_pt(a, model.radius), _compile_pt(b, model.radius)
@@ -397,6 +495,28 @@ def _compile(c: Cond, model: Any) -> Test:
         case Not(part=p):
             f = _compile(p, model)
             return lambda seen, env: not f(seen, env)
+        case Chain(x=x, y=y, first=first, link=link, to=to):
+            start, step, target = _compile(first, model), _compile(link, model), _compile_pt(to, model.radius)
+
+            def chained(seen: Sequence[Point], env: dict[str, Point]) -> bool:
+                goal = target(env)
+                todo = []
+                for s in seen:
+                    env[y] = s
+                    if start(seen, env):
+                        todo.append(s)
+                reached = set(todo)
+                while todo and goal not in reached:
+                    env[x] = todo.pop()
+                    for s in seen:
+                        if s not in reached:
+                            env[y] = s
+                            if step(seen, env):
+                                reached.add(s)
+                                todo.append(s)
+                return goal in reached
+
+            return chained
         case Forall(var=v, body=b) | Exists(var=v, body=b):
             f, every = _compile(b, model), isinstance(c, Forall)
 
@@ -450,15 +570,23 @@ def walk(c: Cond) -> Iterator[Cond]:
             yield from walk(p)
         case Forall(body=b) | Exists(body=b):
             yield from walk(b)
+        case Chain(first=first, link=link):
+            yield from walk(first)
+            yield from walk(link)
 
 
 def roles(c: Cond) -> tuple[str, ...]:
-    """The witness roles of ``c``'s existentials, in order, each once."""
+    """The witness roles of ``c``'s existentials and chains, in order, each once."""
     out: list[str] = []
     for sub in walk(c):
-        if isinstance(sub, Exists) and sub.role not in out:
+        if isinstance(sub, Exists | Chain) and sub.role not in out:
             out.append(sub.role)
     return tuple(out)
+
+
+def chain_roles(c: Cond) -> tuple[str, ...]:
+    """The roles of ``c``'s chains."""
+    return tuple(dict.fromkeys(sub.role for sub in walk(c) if isinstance(sub, Chain)))
 
 
 def edge_roles(c: Cond) -> tuple[str, ...]:
@@ -466,9 +594,10 @@ def edge_roles(c: Cond) -> tuple[str, ...]:
     ``exists`` lies inside a ``forall``. A role outside every ``forall`` is what the leg itself needs its mover
     to see (named by ``build(..., witnesses=True)``), never an edge's bridge."""
     out: list[str] = []
+    chains = chain_roles(c)
     for sub in walk(c):
         if isinstance(sub, Forall):
-            out += [r for r in roles(sub.body) if r not in out]
+            out += [r for r in roles(sub.body) if r not in out and r not in chains]
     return tuple(out)
 
 
@@ -481,6 +610,8 @@ __all__ = [
     "Pt",
     "all_of",
     "any_of",
+    "chain",
+    "chain_roles",
     "clear",
     "clear_of",
     "distinct",
