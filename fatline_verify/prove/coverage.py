@@ -128,10 +128,46 @@ FAMILY_PARTS = {
                 "an edge a mover's test passed through a witness is a path of two edges",
                 needed=lambda model: _witnesses(model),
             ),
+            Part(
+                "answered",
+                ("answered",),
+                "an edge whose mover above the other in the family's order kept it without a witness stays an edge",
+                needed=lambda model: _inducts(model),
+            ),
+            Part(
+                "chain",
+                ("chain-first", "chain-link"),
+                "each link of a chain is an edge after the round, or an edge with a mover above the chain's robot",
+                needed=lambda model: _inducts(model),
+            ),
+            Part(
+                "rules-out",
+                ("rules-out",),
+                "no robot moving by a class has a witness of a role that rules the class out",
+                needed=lambda model: _rules_out(model),
+            ),
         ),
-        "every edge before the round is a path of at most two edges after it",
+        "every edge before the round is a path of at most two edges after it, or (a family with chains) connected "
+        "after it by induction over the family's order",
     ),
 }
+
+
+def _inducts(model: Model) -> str:
+    """``""`` when the model's family has chains (its connectivity inducts over its order), else why not."""
+    from ..rules import registry
+    from .smt.family import inducts
+
+    family = registry.family(model)
+    return "" if family is not None and inducts(family) else "the family has no chain: no induction over an order"
+
+
+def _rules_out(model: Model) -> str:
+    """``""`` when the model's family declares roles that rule a class out (used by its obligations), else why not."""
+    from ..rules import registry
+
+    family = registry.family(model)
+    return "" if family is not None and family.rules_out else "no role of the family rules a class out"
 
 
 def _witnesses(model: Model) -> str:
@@ -141,9 +177,9 @@ def _witnesses(model: Model) -> str:
     from ..rules.family.lang import edge_roles
 
     family = registry.family(model)
-    if family is None or any(edge_roles(c.guard) for c in family.classes):
+    if family is None or any(set(edge_roles(c.guard)) - set(family.rules_out) for c in family.classes):
         return ""
-    return "no guard of the family names an edge's witness, so every edge is kept"
+    return "no guard of the family names an edge's witness (a bridge), so every edge is kept or chained"
 
 
 def family_lemma(lemma: Lemma, encoding: str) -> Entry:

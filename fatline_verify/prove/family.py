@@ -104,7 +104,8 @@ def prove_family(
         if not fires:
             ans = spend.solve(build(arith(), model, family, spec, vacuity=True), budget * VACUITY_SHARE)
             if ans.status == "unsat":
-                return result(Verdict.PROVED, "these legs never occur together (vacuous)")
+                where = "" if q is None else f" on the lattice q = {q}"
+                return result(Verdict.PROVED, f"these legs never occur together{where} (vacuous)")
             fires = ans.status == "sat"
         if min(budget, spend.left()) < MIN_CHECK:
             break

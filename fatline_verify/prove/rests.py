@@ -25,7 +25,7 @@ class Fact:
     checked: str
 
 
-_LATTICE = re.compile(r"lattice q=(\d+)")
+_LATTICE = re.compile(r"lattice q ?= ?(\d+)")
 
 
 def lattices(rows: Sequence[dict[str, Any]]) -> str:

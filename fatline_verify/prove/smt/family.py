@@ -32,9 +32,10 @@ that the condition *implies* for the named robots, in any swarm they are part of
   rest of o (and of b): the chain's first link admits o (from r's end), or its link admits b to o, in r's view,
   and r and o (b and o) do not see each other after, and it is not an edge before the round with a mover above r
   in the order;
-- ``connectivity/rules-out-ROLE`` (a role that rules out a class): a robot o moving by that class is the robot a
-  witness b of the role speaks of, in the view of a robot r that sees both. Unsat: no robot moving by a class
-  ever has a witness of a role ruling that class out, so every obligation may take that existential as false
+- ``connectivity/rules-out-rest.and.CLASS.by.ROLE`` (a role that rules out a class): a robot o moving by that
+  class is the robot a witness b of the role speaks of, in the view of a robot r that sees both. Unsat: no
+  robot moving by a class ever has a witness of a role ruling that class out, so every obligation may take that
+  existential as false
   about such a robot (the bridged ones do, about o and about their witness b).
 
 An existential is keyed by its role and the named robots its body speaks of (:func:`about`): the robot a
@@ -378,9 +379,7 @@ class FamilySpec:
     @property
     def key(self) -> str:
         """``lemma/form-mine.and.other[.by.role-witness]``: how result rows and files name the obligation
-        (``lemma/rules-out-ROLE`` for the role's own obligation)."""
-        if self.form == RULES:
-            return f"{self.lemma}/{self.form}-{self.role}"
+        (``connectivity/rules-out-rest.and.CLASS.by.ROLE`` for a role's own)."""
         return f"{self.lemma}/{self.form}-{self.mine}.and.{self.other_name}"
 
     @property
