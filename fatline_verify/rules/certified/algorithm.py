@@ -115,7 +115,6 @@ LABELS = {
     "contract-down": f"down toward the robot below on its vertical, to {DOWN_GAP} radii",
     "contract-up": f"up under the robot above on its vertical, to {UP_GAP} radii (it sees only its vertical)",
     "make-room": "one lattice unit down, out of the way of a robot left of it",
-    "held": "every move the rules allow leaves its move family: stays",
 }
 """The rule labels :func:`decide` returns, read aloud."""
 
