@@ -57,7 +57,8 @@ def obligation_text(model: Model, task: Any, *, slots: int) -> tuple[str, str] |
         from .smt.family import build as build_family
 
         family = registry.family(model)
-        full = build_family(Arith(None), model, family, task)
+        # a family decided on the model's lattice (``lattice``) is built there, as prove_family builds it
+        full = build_family(Arith(model.parameters.q if family.lattice else None), model, family, task)
         full.comment = family_argument(model, family, task, full)
         return name, smt2(full)
     if kind == "live":
