@@ -391,18 +391,19 @@ Test = Callable[[Sequence[Point], dict[str, Point]], bool]
 """A condition compiled for one model: ``test(seen, points)``, ``points`` the named points (a quantifier binds
 its variable there)."""
 
-_COMPILED: dict[tuple[int, int], tuple[Cond, Any, Test]] = {}
-"""Each condition compiled once per model (by ``id``; the condition and the model are kept beside the test, so
-neither ``id`` is reused while the entry lives)."""
+_COMPILED: dict[tuple[Any, ...], tuple[Cond, Test]] = {}
+"""Each condition compiled once per geometry (by ``id``, the lattice, the view and the contact: all a test reads
+of the model; the condition is kept beside the test, so its ``id`` is not reused while the entry lives)."""
 
 
 def _compiled(c: Cond, model: Any) -> Test:
-    got = _COMPILED.get((id(c), id(model)))
+    key = (id(c), model.radius, model.view2, model.contact2, str(model.options.contact))
+    got = _COMPILED.get(key)
     if got is None:
-        if len(_COMPILED) > 20_000:
+        if len(_COMPILED) > 2_000:
             _COMPILED.clear()
-        got = _COMPILED[(id(c), id(model))] = (c, model, _compile(c, model))
-    return got[2]
+        got = _COMPILED[key] = (c, _compile(c, model))
+    return got[1]
 
 
 def _compile(c: Cond, model: Any) -> Test:
